@@ -1,0 +1,138 @@
+// CityModel: the plain records that the OSM importer and the procedural layout both produce,
+// and everything downstream (citygen, inspect) consumes. Host only; no rendering types here.
+//
+// Coordinates are local metres on a plane tangent to the Earth at `origin`:
+// x grows to the east, y to the north. (The renderer maps them to world x = east,
+// z = -north, y = up.)
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace urbis {
+
+struct Vec2d {
+    double x = 0, y = 0;
+};
+
+/// A closed ring of points; the closing point is not repeated.
+/// Outer rings are counter-clockwise, holes clockwise (seen from above, x east, y north).
+using Ring = std::vector<Vec2d>;
+
+struct Polygon {
+    Ring outer;
+    std::vector<Ring> holes;
+};
+
+/// Linear sRGB-primaries colour in [0,1].
+struct Rgb {
+    float r = 0.8f, g = 0.8f, b = 0.8f;
+};
+
+enum class RoofShape : uint8_t {
+    Flat, Skillion, Gabled, Hipped, Pyramidal, Dome, Onion, Gambrel, Mansard, Round, Unknown
+};
+
+/// Broad building classes that drive default colours and (later) facade styles.
+enum class BuildingType : uint8_t {
+    Generic, Residential, House, Apartments, Commercial, Retail, Office, Industrial, Warehouse,
+    Religious, Civic, School, Hospital, Hotel, Garage, Shed, Roof
+};
+
+enum class BuildingMaterial : uint8_t {
+    Unknown, Brick, Concrete, Glass, Metal, Plaster, Stone, Wood, Sandstone, Timber
+};
+
+/// Where a building's height came from (how much to trust it).
+enum class HeightSource : uint8_t { HeightTag, Levels, Seeded };
+
+struct Building {
+    int64_t osmId = 0;            ///< way id, or relation id (negative) for multipolygons; 0 if generated
+    bool isPart = false;          ///< a building:part (its outline building was replaced)
+    Polygon footprint;
+    float minHeight = 0.0f;       ///< m above ground where the walls start
+    float height = 10.0f;         ///< m above ground of the highest point, roof included
+    float roofHeight = 0.0f;      ///< m of `height` taken by the roof
+    int levels = -1;              ///< building:levels above ground, -1 if unknown
+    int minLevel = 0;
+    int roofLevels = 0;
+    HeightSource heightSource = HeightSource::Seeded;
+    RoofShape roofShape = RoofShape::Flat;
+    float roofDirection = -1.0f;  ///< degrees clockwise from north, -1 if untagged
+    BuildingType type = BuildingType::Generic;
+    BuildingMaterial material = BuildingMaterial::Unknown;
+    Rgb wallColour;
+    Rgb roofColour{0.35f, 0.33f, 0.32f};
+    uint32_t seed = 0;            ///< per-building seed for everything procedural
+};
+
+enum class HighwayClass : uint8_t {
+    Motorway, Trunk, Primary, Secondary, Tertiary, Unclassified, Residential, Service,
+    LivingStreet, Pedestrian, Footway, Cycleway, Path, Steps, Track, Other
+};
+
+enum class Sidewalk : uint8_t { Unknown, None, Left, Right, Both, Separate };
+
+struct Road {
+    int64_t osmId = 0;
+    std::vector<Vec2d> centerline;
+    HighwayClass highway = HighwayClass::Residential;
+    float width = 6.0f;           ///< m, carriageway; from `width` or estimated from lanes and class
+    int lanes = 2;
+    Sidewalk sidewalk = Sidewalk::Unknown;
+    bool oneway = false;
+    int layer = 0;
+    bool bridge = false;
+    bool tunnel = false;
+};
+
+struct Lamp {
+    int64_t osmId = 0;
+    Vec2d position;
+    float height = 6.0f;          ///< m, from `height` or `lamp_mount` defaults
+    std::string lampType;         ///< `lamp_type` / `light:method`, as tagged
+    int lightCount = 1;           ///< `light:count`
+    float colourTemperature = 0;  ///< K, from `light:colour`; 0 if unknown
+};
+
+struct Tree {
+    int64_t osmId = 0;
+    Vec2d position;
+    float height = 8.0f;
+    float crownDiameter = 5.0f;
+};
+
+enum class AreaKind : uint8_t { Park, Grass, Forest, Water };
+
+struct Area {
+    int64_t osmId = 0;
+    AreaKind kind = AreaKind::Park;
+    Polygon polygon;
+};
+
+/// Geographic reference of a CityModel imported from OSM.
+struct GeoOrigin {
+    bool valid = false;
+    double lat = 0, lon = 0;      ///< degrees, WGS84: the point at local (0, 0)
+};
+
+struct CityModel {
+    std::vector<Building> buildings;
+    std::vector<Road> roads;
+    std::vector<Lamp> lamps;
+    std::vector<Tree> trees;
+    std::vector<Area> areas;
+    GeoOrigin origin;
+    std::string source;                        ///< file name, or "generated"
+    std::map<std::string, uint64_t> dropped;   ///< why things were dropped -> how many
+    size_t buildingParts() const {
+        size_t n = 0;
+        for (const Building& b : buildings) n += b.isPart ? 1 : 0;
+        return n;
+    }
+};
+
+} // namespace urbis

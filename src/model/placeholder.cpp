@@ -1,0 +1,1 @@
+namespace urbis { int placeholderCore = 0; }
