@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages urbis builds and tests with. Idempotent: installs only what is missing.
+set -euo pipefail
+
+packages=(
+  g++ cmake make pkg-config
+  libosmium2-dev libprotozero-dev libexpat1-dev libbz2-dev zlib1g-dev   # OSM import
+  libgeos-dev                                                           # footprint triangulation, validity
+  libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev                 # command line, JSON, PNG, threads
+  libgtest-dev libbenchmark-dev libembree-dev                           # tests, benchmarks, speed reference
+  python-osmnx-doc                                                      # a tiny real OSM extract for the tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+echo "install-deps: installing ${missing[*]}"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

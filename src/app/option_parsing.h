@@ -1,0 +1,20 @@
+// Parsing of the command line's compound values ("20:100", "x,y,z,...").
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace urbis {
+
+/// Splits `text` at `separator` into finite numbers; throws InputError naming `option` if any part
+/// is not a number or the count is not in [minCount, maxCount].
+std::vector<double> parseNumberList(const std::string& option, const std::string& text, char separator,
+                                    size_t minCount, size_t maxCount);
+
+/// "MINLON,MINLAT,MAXLON,MAXLAT" in degrees; nullopt for an empty text. Throws InputError on a box
+/// that is malformed, inverted or off the globe.
+std::optional<std::array<double, 4>> parseBbox(const std::string& text);
+
+} // namespace urbis

@@ -1,0 +1,174 @@
+#include "app/render_command.h"
+
+#include "app/option_parsing.h"
+#include "citygen/city_mesher.h"
+#include "cpu/cpu_renderer.h"
+#include "io/atomic_file.h"
+#include "layout/city_layout.h"
+#include "model/input_error.h"
+#include "osm/osm_import.h"
+#include "scene/camera_framing.h"
+#include "scene/scene.h"
+
+#include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <chrono>
+#include <filesystem>
+#include <cstdio>
+#include <unistd.h>
+
+namespace urbis {
+
+void addRenderCommand(CLI::App& app, RenderOptions& o) {
+    CLI::App* cmd = app.add_subcommand("render", "Path trace a city to a PNG (the generated default world without --osm)");
+    cmd->add_option("--osm", o.osmFile, "OpenStreetMap file: .osm, .osm.pbf, .osm.bz2, .osm.gz");
+    cmd->add_option("--out", o.outFile, "PNG to write")->capture_default_str();
+    cmd->add_option("--width", o.settings.width, "Image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
+    cmd->add_option("--height", o.settings.height, "Image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
+    cmd->add_option("--spp", o.settings.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20))->capture_default_str();
+    cmd->add_option("--seed", o.settings.seed, "Seed of the city and of the sampler")->capture_default_str();
+    cmd->add_option("--threads", o.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+    cmd->add_option("--buildings", o.buildings, "Buildings in the generated city")->check(CLI::Range(uint64_t(1), uint64_t(5000000)))->capture_default_str();
+    cmd->add_option("--building-height-range", o.heightRange, "MIN:MAX metres for buildings without height tags");
+    cmd->add_option("--metres-per-level", o.metresPerLevel, "Storey height for building:levels")->check(CLI::Range(1.0, 20.0))->capture_default_str();
+    cmd->add_option("--bbox", o.bbox, "Crop OSM to MINLON,MINLAT,MAXLON,MAXLAT (default: the file's header box)");
+    cmd->add_option("--camera", o.camera, "X,Y,Z,TX,TY,TZ: position and target in world metres (x east, y up, z south)");
+    cmd->add_option("--camera-geo", o.cameraGeo, "LON,LAT,ALTITUDE,HEADING,PITCH (OSM only; degrees, metres)");
+    cmd->add_option("--fov", o.fovDeg, "Vertical field of view, degrees")->check(CLI::Range(1.0, 170.0))->capture_default_str();
+    cmd->add_option("--sun", o.sun, "ELEVATION,AZIMUTH of the sun in degrees (azimuth clockwise from north)")->capture_default_str();
+    cmd->add_option("--sun-radius", o.sunRadiusDeg, "Angular radius of the sun, degrees")->check(CLI::Range(0.01, 20.0))->capture_default_str();
+    cmd->add_option("--exposure", o.exposureEv, "Exposure in stops")->check(CLI::Range(-20.0, 20.0))->capture_default_str();
+    cmd->add_option("--max-depth", o.settings.maxDepth, "Path vertices after the camera")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd->add_option("--rr-depth", o.settings.rrDepth, "Depth where Russian roulette starts")->check(CLI::Range(1, 1000))->capture_default_str();
+    cmd->add_option("--rr-survival", o.settings.rrSurvival, "Largest survival probability of Russian roulette")->check(CLI::Range(0.01, 1.0))->capture_default_str();
+    cmd->add_option("--stats", o.statsFile, "Write counts, memory, timings and rays/s as JSON");
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// The height range for untagged buildings from "MIN:MAX", if given.
+bool parseHeightRange(const std::string& text, float& lo, float& hi) {
+    if (text.empty()) return false;
+    std::vector<double> v = parseNumberList("--building-height-range", text, ':', 2, 2);
+    if (!(v[0] >= 0.0 && v[0] <= v[1] && v[1] <= 1000.0))
+        throw InputError("--building-height-range: need 0 <= MIN <= MAX <= 1000 metres, got '" + text + "'");
+    lo = float(v[0]);
+    hi = float(v[1]);
+    return true;
+}
+
+/// Fails before any work if an output file's folder does not exist.
+void checkOutputFolder(const std::string& path) {
+    std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!path.empty() && !parent.empty() && !std::filesystem::is_directory(parent))
+        throw InputError(path + ": the folder " + parent.string() + " does not exist");
+}
+
+CityModel loadCity(const RenderOptions& o) {
+    if (o.osmFile.empty()) {
+        LayoutParams params;
+        params.buildings = o.buildings;
+        params.seed = o.settings.seed;
+        parseHeightRange(o.heightRange, params.minBuildingHeight, params.maxBuildingHeight);
+        return generateCity(params);
+    }
+    ImportOptions params;
+    params.seed = o.settings.seed;
+    params.metresPerLevel = o.metresPerLevel;
+    parseHeightRange(o.heightRange, params.minBuildingHeight, params.maxBuildingHeight);
+    params.bbox = parseBbox(o.bbox);
+    return importOsm(o.osmFile, params);
+}
+
+Camera chooseCamera(const RenderOptions& o, const CityModel& city, const Bounds3f& cityBounds) {
+    float aspect = float(o.settings.width) / float(o.settings.height);
+    if (!o.camera.empty()) {
+        std::vector<double> c = parseNumberList("--camera", o.camera, ',', 6, 6);
+        return makeLookAtCamera(Vec3f{float(c[0]), float(c[1]), float(c[2])}, Vec3f{float(c[3]), float(c[4]), float(c[5])},
+                                o.fovDeg, aspect);
+    }
+    if (!o.cameraGeo.empty()) {
+        if (!city.origin.valid) throw InputError("--camera-geo: needs a city imported with --osm");
+        std::vector<double> c = parseNumberList("--camera-geo", o.cameraGeo, ',', 5, 5);
+        Vec2d local = GeoProjection(city.origin.lat, city.origin.lon).toLocal(c[1], c[0]);
+        return cameraFromHeading(Vec3f{float(local.x), float(c[2]), float(-local.y)}, float(c[3]), float(c[4]),
+                                 o.fovDeg, aspect);
+    }
+    return frameCity(cityBounds, o.fovDeg, aspect);
+}
+
+Sun daySun(const RenderOptions& o) {
+    std::vector<double> s = parseNumberList("--sun", o.sun, ',', 2, 2);
+    if (!(s[0] >= -90.0 && s[0] <= 90.0)) throw InputError("--sun: elevation must be in [-90, 90] degrees");
+    // Irradiance in the renderer's relative units: about six times the analytic sky's.
+    return makeSun(float(s[0]), float(s[1]), o.sunRadiusDeg, Vec3f{3.3f, 3.1f, 2.8f});
+}
+
+nlohmann::json countsJson(const CityModel& city) {
+    return {{"buildings", city.buildings.size()}, {"building_parts", city.buildingParts()},
+            {"roads", city.roads.size()}, {"lamps", city.lamps.size()}, {"trees", city.trees.size()},
+            {"areas", city.areas.size()}};
+}
+
+} // namespace
+
+void runRender(const RenderOptions& o) {
+    size_t threads = o.threads ? o.threads : size_t(tbb::info::default_concurrency());
+    tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
+    Sun sun = daySun(o);
+    checkOutputFolder(o.outFile);
+    checkOutputFolder(o.statsFile);
+
+    auto t0 = Clock::now();
+    CityModel city = loadCity(o);
+    double secondsImport = secondsSince(t0);
+
+    t0 = Clock::now();
+    CityMesh cityMesh = meshCity(city);
+    double secondsCitygen = secondsSince(t0);
+
+    t0 = Clock::now();
+    Scene scene = Scene::build(cityMesh.mesh, cityMesh.materials);
+    scene.sun = sun;
+    double secondsBvh = secondsSince(t0);
+
+    Camera camera = chooseCamera(o, city, cityMesh.cityBounds);
+    RenderCounters counters;
+    LinearImage image = renderCpu(scene.view(), camera, o.settings, isatty(2), counters);
+
+    t0 = Clock::now();
+    writePng(toneMap(image, o.exposureEv), o.outFile);
+    double secondsWrite = secondsSince(t0);
+
+    if (o.statsFile.empty()) return;
+    SceneMemory memory = scene.memory();
+    nlohmann::json dropped(city.dropped);
+    for (const auto& [reason, n] : cityMesh.dropped) dropped[reason] = n;
+    nlohmann::json stats = {
+        {"source", city.source},
+        {"counts", countsJson(city)},
+        {"dropped", dropped},
+        {"triangles", scene.triangles.size()},
+        {"triangles_by_kind", cityMesh.trianglesByKind},
+        {"bvh_nodes", scene.nodes.size()},
+        {"materials", scene.materials.size()},
+        {"bytes_scene", memory.total()},
+        {"bytes_by_kind", {{"triangles", memory.triangles}, {"triangle_info", memory.triangleInfo},
+                           {"materials", memory.materials}, {"bvh", memory.bvh}}},
+        {"width", o.settings.width}, {"height", o.settings.height}, {"spp", o.settings.spp},
+        {"seed", o.settings.seed}, {"threads", threads}, {"device", "cpu"},
+        {"seconds", {{"import", secondsImport}, {"citygen", secondsCitygen}, {"bvh", secondsBvh},
+                     {"render", counters.seconds}, {"write", secondsWrite}}},
+        {"seconds_render", counters.seconds},
+        {"rays", counters.rays},
+        {"rays_per_second", counters.seconds > 0 ? double(counters.rays) / counters.seconds : 0.0},
+    };
+    writeTextFileAtomically(o.statsFile, stats.dump(2) + "\n");
+}
+
+} // namespace urbis

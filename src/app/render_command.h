@@ -1,0 +1,36 @@
+// `urbis render`: load or generate a city, mesh it, build the BVH, path trace, write PNG and stats.
+#pragma once
+
+#include "scene/render_settings.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace urbis {
+
+struct RenderOptions {
+    std::string osmFile;              ///< empty: the generated city
+    std::string outFile = "urbis.png";
+    std::string statsFile;
+    RenderSettings settings;
+    unsigned threads = 0;             ///< 0: all cores
+    uint64_t buildings = 400;         ///< size of the generated city
+    std::string heightRange;          ///< "min:max" metres for buildings without height tags
+    std::string bbox;                 ///< "minLon,minLat,maxLon,maxLat"
+    std::string camera;               ///< "x,y,z,tx,ty,tz" world metres
+    std::string cameraGeo;            ///< "lon,lat,altitude,heading,pitch"
+    float fovDeg = 50.0f;
+    std::string sun = "40,150";       ///< "elevation,azimuth" degrees
+    float sunRadiusDeg = 0.27f;
+    float exposureEv = 0.0f;
+    float metresPerLevel = 3.0f;
+};
+
+/// Registers the subcommand's options on `app`.
+void addRenderCommand(CLI::App& app, RenderOptions& options);
+
+/// Runs the render; throws InputError on bad input.
+void runRender(const RenderOptions& options);
+
+} // namespace urbis

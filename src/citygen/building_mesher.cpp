@@ -1,0 +1,85 @@
+#include "citygen/building_mesher.h"
+
+#include <memory>
+
+namespace urbis {
+
+namespace {
+
+struct GeometryDeleter {
+    GEOSContextHandle_t geos;
+    void operator()(GEOSGeometry* g) const { GEOSGeom_destroy_r(geos, g); }
+};
+using GeometryPtr = std::unique_ptr<GEOSGeometry, GeometryDeleter>;
+
+/// A closed GEOS linear ring from a ring whose closing point is implicit; null on failure.
+GEOSGeometry* makeLinearRing(GEOSContextHandle_t geos, const Ring& ring) {
+    GEOSCoordSequence* seq = GEOSCoordSeq_create_r(geos, unsigned(ring.size() + 1), 2);
+    if (!seq) return nullptr;
+    for (size_t i = 0; i <= ring.size(); ++i) {
+        const Vec2d& p = ring[i % ring.size()];
+        GEOSCoordSeq_setXY_r(geos, seq, unsigned(i), p.x, p.y);
+    }
+    return GEOSGeom_createLinearRing_r(geos, seq);
+}
+
+GeometryPtr makePolygon(GEOSContextHandle_t geos, const Polygon& polygon) {
+    GEOSGeometry* shell = makeLinearRing(geos, polygon.outer);
+    if (!shell) return GeometryPtr(nullptr, {geos});
+    std::vector<GEOSGeometry*> holes;
+    for (const Ring& hole : polygon.holes)
+        if (GEOSGeometry* h = makeLinearRing(geos, hole)) holes.push_back(h);
+    return GeometryPtr(GEOSGeom_createPolygon_r(geos, shell, holes.data(), unsigned(holes.size())), {geos});
+}
+
+/// Triangles of the footprint in the city plane, from GEOS's constrained Delaunay triangulation.
+bool triangulateFootprint(GEOSContextHandle_t geos, const Polygon& footprint, std::vector<std::array<Vec2d, 3>>& out) {
+    GeometryPtr polygon = makePolygon(geos, footprint);
+    if (!polygon) return false;
+    GeometryPtr triangles(GEOSConstrainedDelaunayTriangulation_r(geos, polygon.get()), {geos});
+    if (!triangles) return false;
+    int count = GEOSGetNumGeometries_r(geos, triangles.get());
+    for (int i = 0; i < count; ++i) {
+        const GEOSGeometry* ring = GEOSGetExteriorRing_r(geos, GEOSGetGeometryN_r(geos, triangles.get(), i));
+        const GEOSCoordSequence* seq = ring ? GEOSGeom_getCoordSeq_r(geos, ring) : nullptr;
+        if (!seq) return false;
+        std::array<Vec2d, 3> tri;
+        for (unsigned k = 0; k < 3; ++k) GEOSCoordSeq_getXY_r(geos, seq, k, &tri[k].x, &tri[k].y);
+        out.push_back(tri);
+    }
+    return count > 0;
+}
+
+void addWalls(const Ring& ring, double bottom, double top, TriangleInfo info, TriangleMesh& mesh, size_t& count) {
+    for (size_t i = 0; i < ring.size(); ++i) {
+        Vec2d a = ring[i], b = ring[(i + 1) % ring.size()];
+        Vec3f a0 = worldFromCity(a, bottom), b0 = worldFromCity(b, bottom);
+        Vec3f a1 = worldFromCity(a, top), b1 = worldFromCity(b, top);
+        mesh.add({a0, b0, b1}, info);
+        mesh.add({a0, b1, a1}, info);
+        count += 2;
+    }
+}
+
+} // namespace
+
+bool meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleInfo wallInfo, TriangleInfo roofInfo,
+                  TriangleMesh& mesh, BuildingTriangleCounts& counts) {
+    std::vector<std::array<Vec2d, 3>> footprint;
+    if (!triangulateFootprint(geos, building.footprint, footprint)) return false;
+    double bottom = building.minHeight, top = building.height;
+    for (const auto& t : footprint) {
+        // Triangles are two-sided for both backends, so GEOS's winding needs no fixing.
+        mesh.add({worldFromCity(t[0], top), worldFromCity(t[1], top), worldFromCity(t[2], top)}, roofInfo);
+        ++counts.roofs;
+        if (bottom > 0.0) {
+            mesh.add({worldFromCity(t[0], bottom), worldFromCity(t[1], bottom), worldFromCity(t[2], bottom)}, wallInfo);
+            ++counts.walls;
+        }
+    }
+    addWalls(building.footprint.outer, bottom, top, wallInfo, mesh, counts.walls);
+    for (const Ring& hole : building.footprint.holes) addWalls(hole, bottom, top, wallInfo, mesh, counts.walls);
+    return true;
+}
+
+} // namespace urbis

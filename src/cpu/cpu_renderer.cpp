@@ -1,0 +1,73 @@
+#include "cpu/cpu_renderer.h"
+
+#include "integrators/path_tracer.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+
+namespace urbis {
+
+namespace {
+
+/// A bar on stderr redrawn when the whole percentage changes.
+class ProgressBar {
+public:
+    ProgressBar(bool enabled, size_t total) : enabled_(enabled), total_(total) {}
+    void advance(size_t amount) {
+        if (!enabled_) return;
+        size_t done = done_ += amount;
+        int percent = int(100 * done / total_);
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (percent == shown_) return;
+        shown_ = percent;
+        std::fprintf(stderr, "\rrendering [%-50.*s] %3d%%", percent / 2,
+                     "##################################################", percent);
+        if (done == total_) std::fputc('\n', stderr);
+    }
+
+private:
+    bool enabled_;
+    size_t total_;
+    std::atomic<size_t> done_{0};
+    std::mutex mutex_;
+    int shown_ = -1;
+};
+
+} // namespace
+
+LinearImage renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
+                      bool showProgress, RenderCounters& counters) {
+    LinearImage image{settings.width, settings.height, std::vector<Vec3f>(size_t(settings.width) * settings.height)};
+    std::atomic<uint64_t> rays{0};
+    ProgressBar progress(showProgress, image.pixels.size());
+    auto start = std::chrono::steady_clock::now();
+    constexpr size_t kTile = 16;
+    tbb::parallel_for(
+        tbb::blocked_range2d<uint32_t>(0, settings.height, kTile, 0, settings.width, kTile),
+        [&](const tbb::blocked_range2d<uint32_t>& tile) {
+            uint64_t tileRays = 0;
+            for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
+                for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                    Vec3f sum{};
+                    for (uint32_t s = 0; s < settings.spp; ++s) {
+                        PathSample sample = tracePath(scene, camera, settings, x, y, s);
+                        sum += sample.radiance;
+                        tileRays += sample.rays;
+                    }
+                    image.pixels[size_t(y) * settings.width + x] = sum / float(settings.spp);
+                }
+            rays += tileRays;
+            progress.advance(tile.rows().size() * tile.cols().size());
+        },
+        tbb::simple_partitioner());
+    counters.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    counters.rays = rays;
+    return image;
+}
+
+} // namespace urbis
