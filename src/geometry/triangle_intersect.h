@@ -1,0 +1,92 @@
+// Watertight ray/triangle intersection (host+device).
+#pragma once
+
+#include "math/ray.h"
+#include "scene/triangle.h"
+
+namespace urbis {
+
+/// The per-ray part of the watertight test, computed once per ray and reused for every
+/// triangle: the axis permutation (kz is the dominant axis of the direction) and the shear
+/// that maps the ray onto the +z axis. See "Watertight Ray/Triangle Intersection",
+/// S. Woop, C. Benthin, I. Wald, JCGT 2(1), 2013, section 3.
+struct WatertightRay {
+    Vec3f origin;      ///< world space, metres
+    int kx = 0, ky = 1, kz = 2;
+    float sx = 0, sy = 0, sz = 1;
+
+    WatertightRay() = default;
+    URBIS_HD explicit WatertightRay(const Ray& ray) : origin(ray.origin) {
+        kz = maxAbsAxis(ray.dir);
+        kx = kz == 2 ? 0 : kz + 1;
+        ky = kx == 2 ? 0 : kx + 1;
+        // Swapping kx and ky keeps the winding, so the sign of the determinant keeps meaning.
+        if (ray.dir[kz] < 0.0f) {
+            int swap = kx;
+            kx = ky;
+            ky = swap;
+        }
+        sx = ray.dir[kx] / ray.dir[kz];
+        sy = ray.dir[ky] / ray.dir[kz];
+        sz = 1.0f / ray.dir[kz];
+    }
+};
+
+/// a*b - c*d rounded as two products and one difference, never contracted to a fused
+/// multiply-add: edge functions of a shared edge must be exact negatives of each other in
+/// both triangles, or rays leak between them (nvcc contracts by default; g++ does not in
+/// ISO mode).
+URBIS_HD inline float differenceOfProductsUnfused(float a, float b, float c, float d) {
+#if URBIS_GPU_CODE
+    return __fsub_rn(__fmul_rn(a, b), __fmul_rn(c, d));
+#else
+    return a * b - c * d;
+#endif
+}
+
+/// Watertight intersection of a ray with a two-sided triangle (Woop, Benthin, Wald 2013):
+/// rays through a shared edge or vertex of a closed mesh always hit one of its triangles.
+/// On a hit with ray.tmin < t < ray.tmax (strictly) returns true and sets t (in units of
+/// |ray.dir|) and the barycentrics u, v of p1 and p2: hit point = (1-u-v) p0 + u p1 + v p2.
+/// Degenerate (zero-area or edge-on) triangles never hit.
+URBIS_HD inline bool intersectTriangle(const Triangle& tri, const Ray& ray, const WatertightRay& wr,
+                                       float& t, float& u, float& v) {
+    const Vec3f a = tri.p0 - wr.origin;
+    const Vec3f b = tri.p1 - wr.origin;
+    const Vec3f c = tri.p2 - wr.origin;
+    // Shear and scale the vertices into ray space, where the ray is the +z axis.
+    const float az = a[wr.kz], bz = b[wr.kz], cz = c[wr.kz];
+    const float ax = a[wr.kx] - wr.sx * az, ay = a[wr.ky] - wr.sy * az;
+    const float bx = b[wr.kx] - wr.sx * bz, by = b[wr.ky] - wr.sy * bz;
+    const float cx = c[wr.kx] - wr.sx * cz, cy = c[wr.ky] - wr.sy * cz;
+    // Scaled barycentrics: 2D edge functions of the projected edges bc, ca, ab.
+    float e0 = differenceOfProductsUnfused(cx, by, cy, bx);
+    float e1 = differenceOfProductsUnfused(ax, cy, ay, cx);
+    float e2 = differenceOfProductsUnfused(bx, ay, by, ax);
+    // Exactly on an edge in float: decide in double, which is exact here (section 3.3).
+    if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {
+        e0 = static_cast<float>(double(cx) * double(by) - double(cy) * double(bx));
+        e1 = static_cast<float>(double(ax) * double(cy) - double(ay) * double(cx));
+        e2 = static_cast<float>(double(bx) * double(ay) - double(by) * double(ax));
+    }
+    // Both faces: the edge functions must not have mixed signs.
+    if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
+    const float det = e0 + e1 + e2;
+    if (det == 0.0f) return false;
+    const float scaledT = e0 * (wr.sz * az) + e1 * (wr.sz * bz) + e2 * (wr.sz * cz);
+    const float invDet = 1.0f / det;
+    const float hitT = scaledT * invDet;
+    if (!(hitT > ray.tmin && hitT < ray.tmax)) return false;
+    t = hitT;
+    u = e1 * invDet;
+    v = e2 * invDet;
+    return true;
+}
+
+/// Convenience overload that builds the per-ray shear itself; prefer the one above when
+/// testing a ray against many triangles.
+URBIS_HD inline bool intersectTriangle(const Triangle& tri, const Ray& ray, float& t, float& u, float& v) {
+    return intersectTriangle(tri, ray, WatertightRay(ray), t, u, v);
+}
+
+} // namespace urbis

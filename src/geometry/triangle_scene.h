@@ -1,0 +1,46 @@
+// Closest-hit and shadow queries against triangles stored in BVH leaf order (host+device).
+#pragma once
+
+#include "accel/bvh_traverse.h"
+#include "geometry/triangle_intersect.h"
+
+#include <cstdint>
+
+namespace urbis {
+
+/// Non-owning view of a triangle BVH: nodes from buildBvh over the triangles' bounds and the
+/// triangles reordered by its primOrder (triangles[i] = original[primOrder[i]]).
+struct TriangleSceneView {
+    const BvhNode* nodes;
+    const Triangle* triangles;
+    uint32_t triangleCount;
+};
+
+/// The closest triangle hit with ray.tmin < t < ray.tmax, in world space. Hit::prim is the
+/// index into view.triangles (leaf order); invalid if nothing is hit. Watertight (Woop et
+/// al. 2013) and robust in the BVH (Ize 2013).
+URBIS_HD inline Hit intersectClosest(const TriangleSceneView& view, Ray ray) {
+    const WatertightRay wr(ray);
+    Hit hit;
+    traverseBvh<false>(view.nodes, ray, hit, [&](uint32_t prim, Ray& r, Hit& h) {
+        float t, u, v;
+        if (!intersectTriangle(view.triangles[prim], r, wr, t, u, v)) return false;
+        h = {prim, t, u, v};
+        r.tmax = t;
+        return true;
+    });
+    return hit;
+}
+
+/// Whether any triangle is hit with ray.tmin < t < ray.tmax (a shadow ray): stops at the
+/// first hit found, in any order.
+URBIS_HD inline bool occluded(const TriangleSceneView& view, Ray ray) {
+    const WatertightRay wr(ray);
+    Hit hit;
+    return traverseBvh<true>(view.nodes, ray, hit, [&](uint32_t prim, Ray& r, Hit&) {
+        float t, u, v;
+        return intersectTriangle(view.triangles[prim], r, wr, t, u, v);
+    });
+}
+
+} // namespace urbis

@@ -1,0 +1,157 @@
+#include "accel/bvh_build.h"
+#include "accel_test_scene.h"
+#include "geometry/triangle_scene.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <cstring>
+#include <random>
+
+using namespace urbis;
+
+namespace {
+
+/// Checks the tree shape: every primitive in exactly one leaf, children inside parents,
+/// leaves not over the size limit, depth under the traversal stack size.
+void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, uint32_t maxLeafSize) {
+    std::vector<int> seen(primBounds.size(), 0);
+    struct Item {
+        uint32_t node, depth;
+    };
+    std::vector<Item> stack{{0, 1}};
+    uint32_t maxDepth = 0;
+    while (!stack.empty()) {
+        const Item it = stack.back();
+        stack.pop_back();
+        const BvhNode& n = bvh.nodes[it.node];
+        maxDepth = std::max(maxDepth, it.depth);
+        const Bounds3f box = n.box();
+        if (n.isLeaf()) {
+            EXPECT_LE(n.primCount, maxLeafSize);
+            for (uint32_t i = n.first; i < n.first + n.primCount; ++i) {
+                ++seen[i];
+                const Bounds3f& pb = primBounds[bvh.primOrder[i]];
+                EXPECT_TRUE(pb.lo.x >= box.lo.x && pb.lo.y >= box.lo.y && pb.lo.z >= box.lo.z);
+                EXPECT_TRUE(pb.hi.x <= box.hi.x && pb.hi.y <= box.hi.y && pb.hi.z <= box.hi.z);
+            }
+            continue;
+        }
+        for (uint32_t c = n.first; c < n.first + 2; ++c) {
+            ASSERT_LT(c, bvh.nodes.size());
+            const Bounds3f cb = bvh.nodes[c].box();
+            EXPECT_TRUE(cb.lo.x >= box.lo.x && cb.lo.y >= box.lo.y && cb.lo.z >= box.lo.z);
+            EXPECT_TRUE(cb.hi.x <= box.hi.x && cb.hi.y <= box.hi.y && cb.hi.z <= box.hi.z);
+            stack.push_back({c, it.depth + 1});
+        }
+    }
+    for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << i;
+    EXPECT_LT(maxDepth, uint32_t(kBvhStackSize));
+}
+
+/// Random rays: half from anywhere towards anywhere, half aimed at random triangles.
+std::vector<Ray> makeRays(const std::vector<Triangle>& tris, int count, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> pos(-120.0f, 120.0f), y(0.1f, 80.0f), unit(0.0f, 1.0f);
+    std::uniform_int_distribution<size_t> pick(0, tris.size() - 1);
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        const Vec3f o{pos(rng), y(rng), pos(rng)};
+        Vec3f target{pos(rng), y(rng) - 20.0f, pos(rng)};
+        if (i % 2) {
+            const Triangle& t = tris[pick(rng)];
+            float a = unit(rng), b = unit(rng);
+            if (a + b > 1.0f) { a = 1.0f - a; b = 1.0f - b; }
+            target = t.p0 + (t.p1 - t.p0) * a + (t.p2 - t.p0) * b;
+        }
+        Ray ray{o, target - o};
+        if (i % 7 == 0) ray.tmax = 0.5f + unit(rng);   // some short rays
+        if (i % 11 == 0) ray.dir = normalize(ray.dir);
+        rays.push_back(ray);
+    }
+    return rays;
+}
+
+Hit bruteForce(const std::vector<Triangle>& tris, Ray ray) {
+    const WatertightRay wr(ray);
+    Hit hit;
+    for (uint32_t i = 0; i < tris.size(); ++i) {
+        float t, u, v;
+        if (intersectTriangle(tris[i], ray, wr, t, u, v)) {
+            hit = {i, t, u, v};
+            ray.tmax = t;
+        }
+    }
+    return hit;
+}
+
+} // namespace
+
+TEST(BvhBuild, EmptyInputIsNeverHit) {
+    const Bvh bvh = buildBvh({});
+    ASSERT_EQ(bvh.nodes.size(), 1u);
+    const TriangleSceneView view{bvh.nodes.data(), nullptr, 0};
+    EXPECT_FALSE(intersectClosest(view, Ray{{0, 0, 0}, {0, 0, 1}}).valid());
+    EXPECT_FALSE(occluded(view, Ray{{0, 0, 0}, {1, 0, 0}}));
+}
+
+TEST(BvhBuild, WellFormedForSeveralOptions) {
+    const std::vector<Triangle> tris = test::makeCityScene(1);
+    const std::vector<Bounds3f> bounds = test::triangleBounds(tris);
+    for (uint32_t leaf : {1u, 4u, 8u}) {
+        BvhBuildOptions opt;
+        opt.maxLeafSize = leaf;
+        opt.binCount = leaf == 4 ? 16 : 32;
+        expectWellFormed(buildBvh(bounds, opt), bounds, leaf);
+    }
+}
+
+TEST(BvhBuild, IdenticalPrimitivesStayShallow) {
+    // All centroids equal: no SAH split exists, object median splits keep it balanced.
+    std::vector<Bounds3f> bounds(5000);
+    for (Bounds3f& b : bounds) { b.extend(Vec3f{0, 0, 0}); b.extend(Vec3f{1, 1, 1}); }
+    expectWellFormed(buildBvh(bounds), bounds, BvhBuildOptions{}.maxLeafSize);
+}
+
+TEST(BvhBuild, SameNodesForAnyThreadCount) {
+    // Large enough to use parallel subtrees and parallel binning.
+    std::vector<Triangle> tris = test::makeCityScene(3, 20000, 5000);
+    const std::vector<Bounds3f> bounds = test::triangleBounds(tris);
+    auto buildWith = [&](int threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        return buildBvh(bounds);
+    };
+    const Bvh one = buildWith(1);
+    for (int threads : {2, 4}) {
+        const Bvh many = buildWith(threads);
+        ASSERT_EQ(one.nodes.size(), many.nodes.size());
+        EXPECT_EQ(0, std::memcmp(one.nodes.data(), many.nodes.data(), one.nodes.size() * sizeof(BvhNode)));
+        EXPECT_EQ(one.primOrder, many.primOrder);
+    }
+}
+
+TEST(BvhTraverse, ClosestHitEqualsBruteForce) {
+    const std::vector<Triangle> tris = test::makeCityScene(5);
+    const Bvh bvh = buildBvh(test::triangleBounds(tris));
+    const std::vector<Triangle> sorted = test::reorder(tris, bvh);
+    const TriangleSceneView view{bvh.nodes.data(), sorted.data(), uint32_t(sorted.size())};
+    const std::vector<Ray> rays = makeRays(tris, 100000, 9);
+    std::vector<Hit> expected(rays.size());
+    tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) { expected[i] = bruteForce(sorted, rays[i]); });
+    int hits = 0, primMismatch = 0, tMismatch = 0, anyMismatch = 0;
+    for (size_t i = 0; i < rays.size(); ++i) {
+        const Hit got = intersectClosest(view, rays[i]);
+        ASSERT_EQ(got.valid(), expected[i].valid()) << "ray " << i;
+        if (occluded(view, rays[i]) != got.valid()) ++anyMismatch;
+        if (!got.valid()) continue;
+        ++hits;
+        if (got.t != expected[i].t) ++tMismatch;
+        // Different triangles can only tie at the same distance (a shared edge).
+        if (got.prim != expected[i].prim) ++primMismatch;
+    }
+    EXPECT_GT(hits, 50000);
+    EXPECT_EQ(tMismatch, 0);
+    EXPECT_EQ(primMismatch, 0);
+    EXPECT_EQ(anyMismatch, 0);
+}

@@ -1,0 +1,68 @@
+// City-like triangle scenes for the accel and geometry tests: closed boxes with shared
+// edges, a ground grid and long thin triangles, all from a seed.
+#pragma once
+
+#include "accel/bvh_build.h"
+#include "accel/bvh_node.h"
+#include "scene/triangle.h"
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace urbis::test {
+
+/// The 12 triangles of the closed box [lo, hi] (shared edges and vertices).
+inline void appendBox(std::vector<Triangle>& out, Vec3f lo, Vec3f hi) {
+    const Vec3f c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
+                        {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    const int quads[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {1, 5, 6, 2}, {2, 6, 7, 3}, {3, 7, 4, 0}};
+    for (const auto& q : quads) {
+        out.push_back({c[q[0]], c[q[1]], c[q[2]]});
+        out.push_back({c[q[0]], c[q[2]], c[q[3]]});
+    }
+}
+
+/// Thousands of random buildings (boxes) on the ground, a triangulated ground grid, and long
+/// thin triangles (wires, kerbs) across the city. Metres, y up.
+inline std::vector<Triangle> makeCityScene(uint32_t seed, int boxCount = 800, int thinCount = 500) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> pos(-100.0f, 100.0f), size(1.0f, 12.0f), height(2.0f, 60.0f);
+    std::vector<Triangle> tris;
+    for (int i = 0; i < boxCount; ++i) {
+        const float x = pos(rng), z = pos(rng), sx = size(rng), sz = size(rng);
+        appendBox(tris, {x, 0.0f, z}, {x + sx, height(rng), z + sz});
+    }
+    constexpr int kGrid = 32;
+    for (int i = 0; i < kGrid; ++i)
+        for (int j = 0; j < kGrid; ++j) {
+            auto p = [](int a, int b) { return Vec3f{-110.0f + 220.0f * a / kGrid, 0.0f, -110.0f + 220.0f * b / kGrid}; };
+            tris.push_back({p(i, j), p(i + 1, j), p(i + 1, j + 1)});
+            tris.push_back({p(i, j), p(i + 1, j + 1), p(i, j + 1)});
+        }
+    std::uniform_real_distribution<float> y(0.5f, 40.0f), w(0.01f, 0.2f);
+    for (int i = 0; i < thinCount; ++i) {
+        const Vec3f a{pos(rng), y(rng), pos(rng)}, b{pos(rng), y(rng), pos(rng)};
+        tris.push_back({a, b, b + Vec3f{0.0f, w(rng), 0.0f}});
+    }
+    return tris;
+}
+
+inline std::vector<Bounds3f> triangleBounds(const std::vector<Triangle>& tris) {
+    std::vector<Bounds3f> bounds(tris.size());
+    for (size_t i = 0; i < tris.size(); ++i) {
+        bounds[i].extend(tris[i].p0);
+        bounds[i].extend(tris[i].p1);
+        bounds[i].extend(tris[i].p2);
+    }
+    return bounds;
+}
+
+/// The triangles in the BVH's leaf order.
+inline std::vector<Triangle> reorder(const std::vector<Triangle>& tris, const Bvh& bvh) {
+    std::vector<Triangle> sorted(tris.size());
+    for (size_t i = 0; i < tris.size(); ++i) sorted[i] = tris[bvh.primOrder[i]];
+    return sorted;
+}
+
+} // namespace urbis::test
