@@ -109,14 +109,15 @@ TEST(LayoutStyle, UsesAndRoofsByDistrict) {
     EXPECT_GT(roofs[RoofShape::Gabled], 0u);
     EXPECT_GT(roofs[RoofShape::Hipped], 0u);
     EXPECT_GT(seeds.size(), c.buildings.size() * 99 / 100) << "per-building seeds are hashes";
-    // The first buildings are central offices; the last, houses in the outskirts.
-    size_t officesFirst = 0, housesLast = 0, n = c.buildings.size();
-    for (size_t i = 0; i < n / 10; ++i) {
-        officesFirst += c.buildings[i].type == BuildingType::Office ? 1 : 0;
-        housesLast += c.buildings[n - 1 - i].type == BuildingType::House ? 1 : 0;
-    }
-    EXPECT_GT(officesFirst, n / 40);
-    EXPECT_GT(housesLast, n / 40);
+    // Buildings come from the centre outward: offices cluster in the first tenth, houses in the last.
+    const size_t n = c.buildings.size(), tenth = n / 10;
+    auto countOf = [&](BuildingType t, size_t from) {
+        return std::count_if(c.buildings.begin() + static_cast<long>(from),
+                             c.buildings.begin() + static_cast<long>(from + tenth),
+                             [t](const Building& b) { return b.type == t; });
+    };
+    EXPECT_GT(countOf(BuildingType::Office, 0), 5 * countOf(BuildingType::Office, n - tenth) + 20);
+    EXPECT_GT(countOf(BuildingType::House, n - tenth), 5 * countOf(BuildingType::House, 0) + 20);
 }
 
 TEST(LayoutStyle, LampsEveryThirtyMetresOrSo) {
