@@ -272,7 +272,8 @@ public:
         std::printf("\nurbis / Embree 3 (build quality HIGH and MEDIUM), same triangles and rays, M/s:\n");
         for (const auto& [name, rate] : rates_) {
             const size_t at = name.find("/urbis");
-            if (at == std::string::npos) continue;
+            const bool spread = name.ends_with("_stddev") || name.ends_with("_cv");
+            if (at == std::string::npos || spread) continue;
             std::printf("  %-42s urbis %7.2f", name.c_str(), rate * 1e-6);
             for (const char* quality : {"high", "medium"}) {
                 auto it = rates_.find(name.substr(0, at) + "/embree_" + quality + name.substr(at + 6));
