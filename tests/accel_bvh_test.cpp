@@ -6,6 +6,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <cfloat>
 #include <cstring>
 #include <random>
 
@@ -14,40 +15,48 @@ using namespace urbis;
 namespace {
 
 /// Checks the tree shape: every primitive in exactly one leaf, children inside parents,
-/// leaves not over the size limit, depth under the traversal stack size.
+/// leaves not over the size limit, depth under 64 levels.
 void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, uint32_t maxLeafSize) {
     std::vector<int> seen(primBounds.size(), 0);
+    auto inside = [](const Bounds3f& in, const Bounds3f& out) {
+        return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.lo.z >= out.lo.z && in.hi.x <= out.hi.x &&
+               in.hi.y <= out.hi.y && in.hi.z <= out.hi.z;
+    };
     struct Item {
         uint32_t node, depth;
+        Bounds3f box;
     };
-    std::vector<Item> stack{{0, 1}};
+    Bounds3f everything;
+    everything.extend(Vec3f{-FLT_MAX, -FLT_MAX, -FLT_MAX});
+    everything.extend(Vec3f{FLT_MAX, FLT_MAX, FLT_MAX});
+    std::vector<Item> stack{{0, 1, everything}};
     uint32_t maxDepth = 0;
     while (!stack.empty()) {
         const Item it = stack.back();
         stack.pop_back();
+        ASSERT_LT(it.node, bvh.nodes.size());
         const BvhNode& n = bvh.nodes[it.node];
         maxDepth = std::max(maxDepth, it.depth);
-        const Bounds3f box = n.box();
-        if (n.isLeaf()) {
-            EXPECT_LE(n.primCount, maxLeafSize);
-            for (uint32_t i = n.first; i < n.first + n.primCount; ++i) {
-                ++seen[i];
-                const Bounds3f& pb = primBounds[bvh.primOrder[i]];
-                EXPECT_TRUE(pb.lo.x >= box.lo.x && pb.lo.y >= box.lo.y && pb.lo.z >= box.lo.z);
-                EXPECT_TRUE(pb.hi.x <= box.hi.x && pb.hi.y <= box.hi.y && pb.hi.z <= box.hi.z);
+        for (int l = 0; l < kBvhWidth; ++l) {
+            const Bounds3f box = n.box(l);
+            if (box.empty()) {
+                EXPECT_EQ(n.primCount[l], 0u);
+                continue;
             }
-            continue;
-        }
-        for (uint32_t c = n.first; c < n.first + 2; ++c) {
-            ASSERT_LT(c, bvh.nodes.size());
-            const Bounds3f cb = bvh.nodes[c].box();
-            EXPECT_TRUE(cb.lo.x >= box.lo.x && cb.lo.y >= box.lo.y && cb.lo.z >= box.lo.z);
-            EXPECT_TRUE(cb.hi.x <= box.hi.x && cb.hi.y <= box.hi.y && cb.hi.z <= box.hi.z);
-            stack.push_back({c, it.depth + 1});
+            EXPECT_TRUE(inside(box, it.box));
+            if (n.primCount[l] == 0) {
+                stack.push_back({n.child[l], it.depth + 1, box});
+                continue;
+            }
+            EXPECT_LE(n.primCount[l], maxLeafSize);
+            for (uint32_t i = n.child[l]; i < n.child[l] + n.primCount[l]; ++i) {
+                ++seen[i];
+                EXPECT_TRUE(inside(primBounds[bvh.primOrder[i]], box));
+            }
         }
     }
     for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << i;
-    EXPECT_LT(maxDepth, uint32_t(kBvhStackSize));
+    EXPECT_LT(maxDepth, 64u);
 }
 
 /// Random rays: half from anywhere towards anywhere, half aimed at random triangles.

@@ -6,16 +6,50 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cfloat>
 
 namespace urbis {
 namespace {
 
-constexpr uint32_t kMaxBins = 64;
+constexpr uint32_t kMaxBins = 32;
 /// Below this depth splits are by SAH; from it on by object median, which halves the count
 /// at every level, so depth stays under 32 + log2(primitives) < 64.
 constexpr uint32_t kMedianSplitDepth = 32;
 /// Nodes with at least this many primitives bin and bound their primitives in parallel.
 constexpr uint32_t kParallelBinningThreshold = 1u << 16;
+
+/// A node of the intermediate binary tree, collapsed into 4-wide nodes at the end.
+/// Interior: primCount == 0 and `first` is the right child (in slots: its slot; after
+/// compact(): the left child, the right one follows). Leaf: primitives [first, first +
+/// primCount) of primOrder.
+struct BinaryNode {
+    Bounds3f box;
+    uint32_t first = 0;
+    uint32_t primCount = 0;
+    bool isLeaf() const { return primCount != 0; }
+};
+
+/// Min and max as compare-and-select: g++ does not inline fminf/fmaxf (NaN rules), which
+/// made them most of the build time.
+float minOf(float a, float b) { return a < b ? a : b; }
+float maxOf(float a, float b) { return a > b ? a : b; }
+
+void grow(Bounds3f& box, const Bounds3f& other) {
+    box.lo = {minOf(box.lo.x, other.lo.x), minOf(box.lo.y, other.lo.y), minOf(box.lo.z, other.lo.z)};
+    box.hi = {maxOf(box.hi.x, other.hi.x), maxOf(box.hi.y, other.hi.y), maxOf(box.hi.z, other.hi.z)};
+}
+
+void grow(Bounds3f& box, Vec3f p) {
+    box.lo = {minOf(box.lo.x, p.x), minOf(box.lo.y, p.y), minOf(box.lo.z, p.z)};
+    box.hi = {maxOf(box.hi.x, p.x), maxOf(box.hi.y, p.y), maxOf(box.hi.z, p.z)};
+}
+
+/// Half the surface area (enough for SAH ratios); any value for an empty box, which
+/// only ever appears next to a count of zero.
+float halfArea(const Bounds3f& box) {
+    const Vec3f d = box.extent();
+    return d.x * d.y + d.y * d.z + d.z * d.x;
+}
 
 struct Bin {
     Bounds3f bounds;
@@ -30,7 +64,7 @@ struct BinSet {
     void merge(const BinSet& other, uint32_t binCount) {
         for (int axis = 0; axis < 3; ++axis)
             for (uint32_t i = 0; i < binCount; ++i) {
-                bins[axis][i].bounds.extend(other.bins[axis][i].bounds);
+                grow(bins[axis][i].bounds, other.bins[axis][i].bounds);
                 bins[axis][i].count += other.bins[axis][i].count;
             }
     }
@@ -69,23 +103,19 @@ public:
         }
         // A subtree over primitives [b, e) owns the 2(e-b)-1 slots that start at its own:
         // tasks write disjoint slots and no counter is shared between threads.
-        slots_.resize(n > 0 ? 2 * size_t(n) - 1 : 1);
+        slots_.resize(2 * size_t(n) - 1);
     }
 
-    /// Builds into slots, where an interior node's `first` is its right child's slot (the
+    /// Builds (at least one primitive) into slots, where an interior node's `first` is its right child's slot (the
     /// left child is the next slot).
     void run() {
         const uint32_t n = static_cast<uint32_t>(order_.size());
-        if (n == 0) {
-            slots_[0] = makeNode(Bounds3f{}, 0, 0);
-            return;
-        }
         build(0, 0, n, reduceBounds(0, n, false), 0);
     }
 
-    /// Lays the slots out depth first with siblings adjacent: the final node array.
-    std::vector<BvhNode> compact() const {
-        std::vector<BvhNode> nodes;
+    /// Lays the slots out depth first with siblings adjacent.
+    std::vector<BinaryNode> compact() const {
+        std::vector<BinaryNode> nodes;
         nodes.reserve(slots_.size());
         nodes.push_back(slots_[0]);
         struct Pending {
@@ -95,8 +125,8 @@ public:
         while (!stack.empty()) {
             const Pending p = stack.back();
             stack.pop_back();
-            const BvhNode& s = slots_[p.slot];
-            if (s.isLeaf() || order_.empty()) continue;
+            const BinaryNode& s = slots_[p.slot];
+            if (s.isLeaf()) continue;
             const uint32_t leftSlot = p.slot + 1, rightSlot = s.first;
             const uint32_t k = static_cast<uint32_t>(nodes.size());
             nodes.push_back(slots_[leftSlot]);
@@ -109,8 +139,8 @@ public:
     }
 
 private:
-    static BvhNode makeNode(const Bounds3f& box, uint32_t first, uint32_t primCount) {
-        return {{box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z}, first, primCount};
+    static BinaryNode makeNode(const Bounds3f& box, uint32_t first, uint32_t primCount) {
+        return {box, first, primCount};
     }
 
     /// Bounds of the primitives (or of their centroids) in order_[b, e).
@@ -118,16 +148,16 @@ private:
         auto body = [&](const tbb::blocked_range<uint32_t>& r, Bounds3f acc) {
             for (uint32_t i = r.begin(); i != r.end(); ++i) {
                 if (centroids)
-                    acc.extend(centroids_[order_[i]]);
+                    grow(acc, centroids_[order_[i]]);
                 else
-                    acc.extend(bounds_[order_[i]]);
+                    grow(acc, bounds_[order_[i]]);
             }
             return acc;
         };
         if (e - b < kParallelBinningThreshold) return body({b, e}, Bounds3f{});
         return tbb::parallel_reduce(
             tbb::blocked_range<uint32_t>(b, e, 4096), Bounds3f{}, body,
-            [](Bounds3f x, const Bounds3f& y) { x.extend(y); return x; });
+            [](Bounds3f x, const Bounds3f& y) { grow(x, y); return x; });
     }
 
     void binRange(uint32_t b, uint32_t e, const BinMapping& map, BinSet& set) const {
@@ -136,7 +166,7 @@ private:
             const Vec3f c = centroids_[prim];
             for (int axis = 0; axis < 3; ++axis) {
                 Bin& bin = set.bins[axis][map.binOf(c[axis], axis)];
-                bin.bounds.extend(bounds_[prim]);
+                grow(bin.bounds, bounds_[prim]);
                 ++bin.count;
             }
         }
@@ -159,7 +189,7 @@ private:
 
     /// The cheapest SAH split over all axes (Wald 2007, section 3), relative to the
     /// node's area.
-    Split findSplit(uint32_t b, uint32_t e, const BinMapping& map, float nodeArea) const {
+    Split findSplit(uint32_t b, uint32_t e, const BinMapping& map, float nodeHalfArea) const {
         const BinSet set = fillBins(b, e, map);
         const uint32_t nb = map.binCount;
         Split best;
@@ -171,18 +201,18 @@ private:
             Bounds3f acc;
             uint32_t count = 0;
             for (uint32_t i = nb - 1; i > 0; --i) {
-                acc.extend(bins[i].bounds);
+                grow(acc, bins[i].bounds);
                 count += bins[i].count;
-                rightCost[i] = count > 0 ? acc.area() * float(count) : -1.0f;
+                rightCost[i] = count > 0 ? halfArea(acc) * float(count) : -1.0f;
             }
             acc = Bounds3f{};
             count = 0;
             for (uint32_t i = 1; i < nb; ++i) {
-                acc.extend(bins[i - 1].bounds);
+                grow(acc, bins[i - 1].bounds);
                 count += bins[i - 1].count;
                 if (count == 0 || rightCost[i] < 0.0f) continue;
                 const float cost = options_.traversalCost +
-                                   options_.intersectionCost * (acc.area() * float(count) + rightCost[i]) / nodeArea;
+                                   options_.intersectionCost * (halfArea(acc) * float(count) + rightCost[i]) / nodeHalfArea;
                 if (best.axis < 0 || cost < best.cost) {
                     best.axis = axis;
                     best.bin = i;
@@ -192,7 +222,7 @@ private:
         }
         if (best.axis >= 0)
             for (uint32_t i = 0; i < nb; ++i)
-                (i < best.bin ? best.leftBounds : best.rightBounds).extend(set.bins[best.axis][i].bounds);
+                grow(i < best.bin ? best.leftBounds : best.rightBounds, set.bins[best.axis][i].bounds);
         return best;
     }
 
@@ -203,7 +233,8 @@ private:
             return;
         }
         BinMapping map;
-        map.binCount = std::clamp(options_.binCount, 2u, kMaxBins);
+        // Small nodes get fewer bins: about one per primitive is as good, and much cheaper.
+        map.binCount = std::clamp(std::min(options_.binCount, 2 * count), 2u, kMaxBins);
         map.centroidBounds = reduceBounds(b, e, true);
         const Vec3f extent = map.centroidBounds.extent();
         for (int axis = 0; axis < 3; ++axis)
@@ -212,7 +243,7 @@ private:
 
         uint32_t mid;
         if (splittable && depth < kMedianSplitDepth) {
-            const Split split = findSplit(b, e, map, box.area());
+            const Split split = findSplit(b, e, map, halfArea(box));
             const float leafCost = options_.intersectionCost * float(count);
             if (split.axis < 0 || (count <= options_.maxLeafSize && leafCost <= split.cost)) {
                 if (count <= options_.maxLeafSize) {
@@ -272,27 +303,107 @@ private:
     const BvhBuildOptions& options_;
     std::vector<uint32_t>& order_;
     std::vector<Vec3f> centroids_;
-    std::vector<BvhNode> slots_;
+    std::vector<BinaryNode> slots_;
 };
+
+BvhNode emptyWideNode() {
+    BvhNode node;
+    for (int l = 0; l < kBvhWidth; ++l) {
+        for (int axis = 0; axis < 3; ++axis) {
+            node.bounds[axis][l] = FLT_MAX;
+            node.bounds[axis + 3][l] = -FLT_MAX;
+        }
+        node.child[l] = 0;
+        node.primCount[l] = 0;
+    }
+    return node;
+}
+
+/// Collapses the binary tree into 4-wide nodes: each wide node takes the children of a
+/// binary node and keeps opening its largest interior child until it has kBvhWidth
+/// (as in Embree's BVH4 builders). Depth first, so siblings' subtrees stay close in memory.
+std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary) {
+    std::vector<BvhNode> wide{emptyWideNode()};
+    struct Pending {
+        uint32_t wide, binary;
+    };
+    std::vector<Pending> stack{{0, 0}};
+    while (!stack.empty()) {
+        const Pending p = stack.back();
+        stack.pop_back();
+        uint32_t lanes[kBvhWidth];
+        int count = 0;
+        const BinaryNode& top = binary[p.binary];
+        if (top.isLeaf()) {
+            lanes[count++] = p.binary;   // a root that is a leaf
+        } else {
+            lanes[count++] = top.first;
+            lanes[count++] = top.first + 1;
+        }
+        while (count < kBvhWidth) {
+            int open = -1;
+            for (int l = 0; l < count; ++l) {
+                const BinaryNode& n = binary[lanes[l]];
+                if (!n.isLeaf() && (open < 0 || n.box.area() > binary[lanes[open]].box.area())) open = l;
+            }
+            if (open < 0) break;
+            const uint32_t left = binary[lanes[open]].first;
+            for (int l = count; l > open + 1; --l) lanes[l] = lanes[l - 1];
+            lanes[open] = left;
+            lanes[open + 1] = left + 1;
+            ++count;
+        }
+        Pending children[kBvhWidth];
+        int childCount = 0;
+        for (int l = 0; l < count; ++l) {
+            const BinaryNode& n = binary[lanes[l]];
+            BvhNode& w = wide[p.wide];
+            for (int axis = 0; axis < 3; ++axis) {
+                w.bounds[axis][l] = n.box.lo[axis];
+                w.bounds[axis + 3][l] = n.box.hi[axis];
+            }
+            if (n.isLeaf()) {
+                w.child[l] = n.first;
+                w.primCount[l] = n.primCount;
+            } else {
+                w.child[l] = static_cast<uint32_t>(wide.size());
+                children[childCount++] = {w.child[l], lanes[l]};
+                wide.push_back(emptyWideNode());   // invalidates w
+            }
+        }
+        for (int c = childCount - 1; c >= 0; --c) stack.push_back(children[c]);
+    }
+    return wide;
+}
 
 } // namespace
 
 Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options) {
     Bvh bvh;
+    if (primBounds.empty()) {
+        bvh.nodes.push_back(emptyWideNode());
+        return bvh;
+    }
     Builder builder(primBounds, options, bvh);
     builder.run();
-    bvh.nodes = builder.compact();
+    bvh.nodes = collapse(builder.compact());
     return bvh;
 }
 
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
-    const float rootArea = bvh.nodes[0].box().area();
+    Bounds3f root;
+    for (int l = 0; l < kBvhWidth; ++l) root.extend(bvh.nodes[0].box(l));
+    const float rootArea = root.area();
     if (rootArea <= 0.0f) return 0.0f;
-    double cost = 0.0;
-    for (const BvhNode& node : bvh.nodes) {
-        const double relArea = node.box().area() / rootArea;
-        cost += relArea * (node.isLeaf() ? options.intersectionCost * node.primCount : options.traversalCost);
-    }
+    double cost = options.traversalCost;
+    for (const BvhNode& node : bvh.nodes)
+        for (int l = 0; l < kBvhWidth; ++l) {
+            const double relArea = node.box(l).area() / rootArea;
+            if (node.primCount[l] > 0)
+                cost += relArea * options.intersectionCost * node.primCount[l];
+            else if (!node.box(l).empty())
+                cost += relArea * options.traversalCost;
+        }
     return static_cast<float>(cost);
 }
 

@@ -1,4 +1,4 @@
-// Binned SAH construction of a binary BVH over primitive bounds (host).
+// Binned SAH construction of a 4-wide BVH over primitive bounds (host).
 #pragma once
 
 #include "accel/bvh_node.h"
@@ -11,14 +11,14 @@ namespace urbis {
 
 /// Knobs of the binned SAH builder. Costs are relative: only their ratio matters.
 struct BvhBuildOptions {
-    uint32_t binCount = 32;            ///< SAH bins per axis, 2..64
+    uint32_t binCount = 32;            ///< SAH bins per axis, 2..32
     uint32_t maxLeafSize = 8;          ///< a node with more primitives is always split
     float traversalCost = 1.0f;        ///< cost of visiting one interior node
     float intersectionCost = 1.0f;     ///< cost of testing one primitive
     uint32_t parallelThreshold = 8192; ///< nodes with fewer primitives are built by one task
 };
 
-/// A BVH: flat nodes (nodes[0] is the root) and the primitive order of its leaves.
+/// A BVH: flat 4-wide nodes (nodes[0] is the root) and the primitive order of its leaves.
 struct Bvh {
     std::vector<BvhNode> nodes;
     /// Leaves reference primitives [first, first+count) in primOrder order: callers reorder
@@ -26,14 +26,16 @@ struct Bvh {
     std::vector<uint32_t> primOrder;
 };
 
-/// Builds a binary BVH by binned SAH (I. Wald, "On fast Construction of SAH-based Bounding
-/// Volume Hierarchies", 2007) over primitive bounds in world space, trying every axis.
-/// Subtrees are built in parallel with TBB; the result is the same for any thread count.
-/// Depth is bounded (below 64) so that traversal stacks of kBvhStackSize never overflow.
-/// An empty input gives a single empty leaf that no ray hits.
+/// Builds a BVH over primitive bounds in world space: a binary tree by binned SAH over all
+/// three axes (I. Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies",
+/// 2007), then collapsed into 4-wide nodes by opening the largest child first. Subtrees
+/// are built in parallel with TBB; the result is the same for any thread count. The tree
+/// stays under 64 levels (object-median splits from depth 32 on), so traversal stacks of
+/// kBvhStackSize never overflow. An empty input gives one empty node that no ray hits.
 Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options = {});
 
-/// The SAH cost of a built BVH, in units of options' costs, normalised by the root's area.
+/// The SAH cost of a built BVH: traversalCost per node visited and intersectionCost per
+/// primitive tested, each weighted by its box's area relative to the root's.
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options = {});
 
 } // namespace urbis

@@ -1,4 +1,4 @@
-// The flat binary BVH node that the CPU and the GPU read as it is (host+device POD).
+// The flat 4-wide BVH node that the CPU and the GPU read as it is (host+device POD).
 #pragma once
 
 #include "math/bounds.h"
@@ -7,22 +7,28 @@
 
 namespace urbis {
 
-/// One node of a binary BVH in a flat array, 32 bytes (two per 64-byte cache line).
-/// Interior node: primCount == 0, its children are nodes[first] and nodes[first + 1].
-/// Leaf: primitives [first, first + primCount) of the build's primOrder.
-/// Bounds are stored as lo.xyz, hi.xyz so that traversal can pick the near plane of each
-/// axis by index from the ray's octant.
-struct BvhNode {
-    float bounds[6];   ///< lo.x, lo.y, lo.z, hi.x, hi.y, hi.z in world space, metres
-    uint32_t first;
-    uint32_t primCount;
+/// Children per node.
+inline constexpr int kBvhWidth = 4;
 
-    URBIS_HD bool isLeaf() const { return primCount != 0; }
-    URBIS_HD Bounds3f box() const {
-        return {{bounds[0], bounds[1], bounds[2]}, {bounds[3], bounds[4], bounds[5]}};
+/// One node of a 4-wide BVH in a flat array: 128 bytes, two CPU cache lines or one GPU L1
+/// line. Lanes are stored structure-of-arrays (bounds[plane][lane]) so that the four slab
+/// tests are one loop the compiler turns into SIMD on the CPU.
+/// Lane l is
+///   - an interior child if primCount[l] == 0 and its bounds are not empty: nodes[child[l]];
+///   - a leaf if primCount[l] > 0: primitives [child[l], child[l] + primCount[l]) of the
+///     build's primOrder;
+///   - unused if its bounds are empty (lo = +FLT_MAX, hi = -FLT_MAX), which no ray hits.
+/// nodes[0] is the root.
+struct alignas(64) BvhNode {
+    float bounds[6][kBvhWidth];       ///< lo.x, lo.y, lo.z, hi.x, hi.y, hi.z per lane; world space, metres
+    uint32_t child[kBvhWidth];
+    uint32_t primCount[kBvhWidth];
+
+    URBIS_HD Bounds3f box(int lane) const {
+        return {{bounds[0][lane], bounds[1][lane], bounds[2][lane]}, {bounds[3][lane], bounds[4][lane], bounds[5][lane]}};
     }
 };
 
-static_assert(sizeof(BvhNode) == 32, "BvhNode is meant to be 32 bytes");
+static_assert(sizeof(BvhNode) == 128, "BvhNode is meant to be 128 bytes");
 
 } // namespace urbis

@@ -1,4 +1,4 @@
-// Stack-based traversal of a flat binary BVH (host+device).
+// Stack-based traversal of a flat 4-wide BVH (host+device).
 #pragma once
 
 #include "accel/bvh_node.h"
@@ -7,16 +7,24 @@
 #include <cfloat>
 #include <cstdint>
 
+#if !URBIS_GPU_CODE && (defined(__SSE2__) || defined(_M_X64))
+#include <emmintrin.h>
+#define URBIS_HAVE_SSE 1
+#else
+#define URBIS_HAVE_SSE 0
+#endif
+
 namespace urbis {
 
-/// Entries of the traversal stack; the builder keeps depth below this.
-inline constexpr int kBvhStackSize = 64;
+/// Entries of the traversal stack: the build keeps the tree under 64 levels and a node
+/// pushes at most kBvhWidth - 1 children.
+inline constexpr int kBvhStackSize = 64 * (kBvhWidth - 1);
 
 /// What the slab test needs of a ray, computed once per ray.
 struct BvhRay {
     float origin[3];
     float invDir[3];
-    int nearOffset[3];   ///< 0 if the direction is positive along the axis (near plane = lo), else 3
+    int nearPlane[3];   ///< row of BvhNode::bounds with the entry plane per axis: lo (0..2) if the direction is positive, else hi (3..5)
 
     /// 1/x, or ±FLT_MAX where |x| is so small that 1/x would overflow; keeps (plane - origin)
     /// * invDir free of NaN (0 * inf) for axis-parallel rays.
@@ -31,32 +39,70 @@ struct BvhRay {
         for (int axis = 0; axis < 3; ++axis) {
             origin[axis] = ray.origin[axis];
             invDir[axis] = safeInverse(ray.dir[axis]);
-            nearOffset[axis] = invDir[axis] < 0.0f ? 3 : 0;
+            nearPlane[axis] = invDir[axis] < 0.0f ? axis + 3 : axis;
         }
     }
 };
 
-/// Robust ray/box slab test: the exit distance is scaled by 1 + 2 gamma(3) so that rounding
-/// never culls a box the ray touches. See "Robust BVH Ray Traversal", T. Ize, JCGT 2(2),
-/// 2013. Returns whether [tmin, tmax] overlaps the box, with the entry distance in tEntry.
-URBIS_HD inline bool intersectNode(const BvhNode& node, const BvhRay& r, float tmin, float tmax, float& tEntry) {
+/// Robust slab test of the ray against the kBvhWidth child boxes of a node: the exit
+/// distance is scaled by 1 + 2 gamma(3) so that rounding never culls a box the ray touches.
+/// See "Robust BVH Ray Traversal", T. Ize, JCGT 2(2), 2013. Writes the entry distance of
+/// each lane and returns a bit mask of the lanes whose box overlaps [tmin, tmax].
+/// On x86 CPUs the four lanes go through SSE; elsewhere (nvcc, other CPUs) through the
+/// scalar loop, which computes the same values bit for bit (same operations, same order).
+URBIS_HD inline unsigned intersectLanes(const BvhNode& node, const BvhRay& r, float tmin, float tmax,
+                                        float (&tEntry)[kBvhWidth]) {
     constexpr float kRobustScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
-    float t0 = tmin, t1 = tmax;
-    for (int axis = 0; axis < 3; ++axis) {
-        const float tNear = (node.bounds[r.nearOffset[axis] + axis] - r.origin[axis]) * r.invDir[axis];
-        const float tFar = (node.bounds[3 - r.nearOffset[axis] + axis] - r.origin[axis]) * r.invDir[axis];
-        t0 = tNear > t0 ? tNear : t0;
-        t1 = tFar * kRobustScale < t1 ? tFar * kRobustScale : t1;
+    const float* nearX = node.bounds[r.nearPlane[0]];
+    const float* nearY = node.bounds[r.nearPlane[1]];
+    const float* nearZ = node.bounds[r.nearPlane[2]];
+    const float* farX = node.bounds[(r.nearPlane[0] + 3) % 6];
+    const float* farY = node.bounds[(r.nearPlane[1] + 3) % 6];
+    const float* farZ = node.bounds[(r.nearPlane[2] + 3) % 6];
+#if URBIS_HAVE_SSE
+    static_assert(kBvhWidth == 4, "the SSE path tests 4 lanes");
+    const __m128 ox = _mm_set1_ps(r.origin[0]), oy = _mm_set1_ps(r.origin[1]), oz = _mm_set1_ps(r.origin[2]);
+    const __m128 ix = _mm_set1_ps(r.invDir[0]), iy = _mm_set1_ps(r.invDir[1]), iz = _mm_set1_ps(r.invDir[2]);
+    const __m128 scale = _mm_set1_ps(kRobustScale);
+    const __m128 nx = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(nearX), ox), ix);
+    const __m128 ny = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(nearY), oy), iy);
+    const __m128 nz = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(nearZ), oz), iz);
+    const __m128 fx = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(farX), ox), ix), scale);
+    const __m128 fy = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(farY), oy), iy), scale);
+    const __m128 fz = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(_mm_load_ps(farZ), oz), iz), scale);
+    // _mm_max_ps(a, b) is a > b ? a : b, as in the scalar path.
+    const __m128 t0 = _mm_max_ps(nz, _mm_max_ps(ny, _mm_max_ps(nx, _mm_set1_ps(tmin))));
+    const __m128 t1 = _mm_min_ps(fz, _mm_min_ps(fy, _mm_min_ps(fx, _mm_set1_ps(tmax))));
+    _mm_storeu_ps(tEntry, t0);
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, t1)));
+#else
+    unsigned mask = 0;
+    for (int l = 0; l < kBvhWidth; ++l) {
+        const float nx = (nearX[l] - r.origin[0]) * r.invDir[0];
+        const float ny = (nearY[l] - r.origin[1]) * r.invDir[1];
+        const float nz = (nearZ[l] - r.origin[2]) * r.invDir[2];
+        const float fx = (farX[l] - r.origin[0]) * r.invDir[0] * kRobustScale;
+        const float fy = (farY[l] - r.origin[1]) * r.invDir[1] * kRobustScale;
+        const float fz = (farZ[l] - r.origin[2]) * r.invDir[2] * kRobustScale;
+        float t0 = nx > tmin ? nx : tmin;
+        t0 = ny > t0 ? ny : t0;
+        t0 = nz > t0 ? nz : t0;
+        float t1 = fx < tmax ? fx : tmax;
+        t1 = fy < t1 ? fy : t1;
+        t1 = fz < t1 ? fz : t1;
+        tEntry[l] = t0;
+        mask |= (t0 <= t1 ? 1u : 0u) << l;
     }
-    tEntry = t0;
-    return t0 <= t1;
+    return mask;
+#endif
 }
 
-/// Closest-hit (AnyHit = false) or any-hit (AnyHit = true) traversal of a binary BVH built
-/// by buildBvh, in world space: near child first, subtrees beyond the current closest hit
-/// skipped, early exit on the first hit for any-hit queries.
+/// Closest-hit (AnyHit = false) or any-hit (AnyHit = true) traversal of a BVH built by
+/// buildBvh, in world space. Leaves of a visited node are tested at once (shrinking
+/// ray.tmax early); interior children are visited nearest first and skipped when they start
+/// beyond the closest hit so far; any-hit queries return at the first hit.
 /// intersect(uint32_t prim, Ray& ray, Hit& hit) -> bool tests one primitive (prim indexes
-/// leaf order, i.e. the build's primOrder positions); on a hit it fills hit and shrinks
+/// leaf order, i.e. positions in the build's primOrder); on a hit it fills hit and shrinks
 /// ray.tmax. Returns whether anything was hit. No allocation; fixed-size stack.
 template <bool AnyHit, typename IntersectPrim>
 URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, IntersectPrim&& intersect) {
@@ -68,33 +114,33 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, IntersectPri
     Entry stack[kBvhStackSize];
     int top = 0;
     bool found = false;
-    float tRoot;
-    if (!intersectNode(nodes[0], r, ray.tmin, ray.tmax, tRoot)) return false;
     uint32_t current = 0;
     for (;;) {
         const BvhNode& node = nodes[current];
-        if (node.isLeaf()) {
-            for (uint32_t i = 0; i < node.primCount; ++i) {
-                if (intersect(node.first + i, ray, hit)) {
+        float tEntry[kBvhWidth];
+        const unsigned hitMask = intersectLanes(node, r, ray.tmin, ray.tmax, tEntry);
+        for (int l = 0; l < kBvhWidth; ++l) {
+            if (!(hitMask >> l & 1u) || node.primCount[l] == 0) continue;
+            for (uint32_t i = 0; i < node.primCount[l]; ++i) {
+                if (intersect(node.child[l] + i, ray, hit)) {
                     found = true;
                     if constexpr (AnyHit) return true;
                 }
             }
-        } else {
-            float tLeft, tRight;
-            const uint32_t left = node.first;
-            const bool hitLeft = intersectNode(nodes[left], r, ray.tmin, ray.tmax, tLeft);
-            const bool hitRight = intersectNode(nodes[left + 1], r, ray.tmin, ray.tmax, tRight);
-            if (hitLeft && hitRight) {
-                const bool leftFirst = tLeft <= tRight;
-                stack[top++] = leftFirst ? Entry{left + 1, tRight} : Entry{left, tLeft};
-                current = leftFirst ? left : left + 1;
-                continue;
-            }
-            if (hitLeft || hitRight) {
-                current = hitLeft ? left : left + 1;
-                continue;
-            }
+        }
+        // Interior children still in reach, sorted nearest first (insertion into at most 4).
+        Entry next[kBvhWidth];
+        int count = 0;
+        for (int l = 0; l < kBvhWidth; ++l) {
+            if (!(hitMask >> l & 1u) || node.primCount[l] != 0 || tEntry[l] > ray.tmax) continue;
+            int k = count++;
+            for (; k > 0 && next[k - 1].tEntry > tEntry[l]; --k) next[k] = next[k - 1];
+            next[k] = {node.child[l], tEntry[l]};
+        }
+        if (count > 0) {
+            for (int k = count - 1; k > 0; --k) stack[top++] = next[k];
+            current = next[0].node;
+            continue;
         }
         // Pop the next subtree that may still hold something closer than ray.tmax.
         for (;;) {

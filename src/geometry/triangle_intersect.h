@@ -51,9 +51,11 @@ URBIS_HD inline float differenceOfProductsUnfused(float a, float b, float c, flo
 /// Degenerate (zero-area or edge-on) triangles never hit.
 URBIS_HD inline bool intersectTriangle(const Triangle& tri, const Ray& ray, const WatertightRay& wr,
                                        float& t, float& u, float& v) {
-    const Vec3f a = tri.p0 - wr.origin;
-    const Vec3f b = tri.p1 - wr.origin;
-    const Vec3f c = tri.p2 - wr.origin;
+    // Vertices relative to the origin, as arrays: indexing by kx, ky, kz is then a load, not
+    // a chain of selects.
+    const float a[3] = {tri.p0.x - wr.origin.x, tri.p0.y - wr.origin.y, tri.p0.z - wr.origin.z};
+    const float b[3] = {tri.p1.x - wr.origin.x, tri.p1.y - wr.origin.y, tri.p1.z - wr.origin.z};
+    const float c[3] = {tri.p2.x - wr.origin.x, tri.p2.y - wr.origin.y, tri.p2.z - wr.origin.z};
     // Shear and scale the vertices into ray space, where the ray is the +z axis.
     const float az = a[wr.kz], bz = b[wr.kz], cz = c[wr.kz];
     const float ax = a[wr.kx] - wr.sx * az, ay = a[wr.ky] - wr.sy * az;
