@@ -62,6 +62,7 @@ struct Building {
     HeightSource heightSource = HeightSource::Seeded;
     RoofShape roofShape = RoofShape::Flat;
     float roofDirection = -1.0f;  ///< degrees clockwise from north, -1 if untagged
+    bool roofAcross = false;      ///< roof:orientation=across: ridge across the longest side
     BuildingType type = BuildingType::Generic;
     BuildingMaterial material = BuildingMaterial::Unknown;
     Rgb wallColour;

@@ -1,0 +1,86 @@
+#include "osm/building_parts.h"
+
+#include "osm/polygon_ops.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace urbis {
+
+namespace {
+
+constexpr double kCell = 64.0; // m, grid cell of the outline index
+
+/// Outline indices by grid cell.
+class OutlineGrid {
+public:
+    void insert(uint32_t index, const std::array<Vec2d, 2>& box) {
+        forCells(box, [&](uint64_t key) { cells_[key].push_back(index); });
+    }
+    /// Calls f(index) for each outline in the cells that `box` touches (an outline may repeat).
+    template <typename F>
+    void query(const std::array<Vec2d, 2>& box, F&& f) const {
+        forCells(box, [&](uint64_t key) {
+            if (const auto it = cells_.find(key); it != cells_.end())
+                for (uint32_t index : it->second) f(index);
+        });
+    }
+
+private:
+    template <typename F>
+    static void forCells(const std::array<Vec2d, 2>& box, F&& f) {
+        const auto cell = [](double v) { return int64_t(std::floor(v / kCell)); };
+        for (int64_t x = cell(box[0].x); x <= cell(box[1].x); ++x)
+            for (int64_t y = cell(box[0].y); y <= cell(box[1].y); ++y)
+                f(uint64_t(x) << 32 ^ uint64_t(uint32_t(y)));
+    }
+    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
+};
+
+bool holds(const Polygon& outline, Vec2d p) {
+    if (!contains(outline.outer, p)) return false;
+    return std::none_of(outline.holes.begin(), outline.holes.end(),
+                        [p](const Ring& hole) { return contains(hole, p); });
+}
+
+bool overlaps(const std::array<Vec2d, 2>& a, const std::array<Vec2d, 2>& b) {
+    return a[0].x <= b[1].x && b[0].x <= a[1].x && a[0].y <= b[1].y && b[0].y <= a[1].y;
+}
+
+} // namespace
+
+void replaceOutlinesByParts(std::vector<Building>& buildings, const GeosContext& geos,
+                            std::map<std::string, uint64_t>& dropped) {
+    if (std::none_of(buildings.begin(), buildings.end(), [](const Building& b) { return b.isPart; })) return;
+    OutlineGrid grid;
+    std::vector<std::array<Vec2d, 2>> boxes(buildings.size());
+    for (uint32_t i = 0; i < buildings.size(); ++i) {
+        boxes[i] = bounds(buildings[i].footprint.outer);
+        if (!buildings[i].isPart) grid.insert(i, boxes[i]);
+    }
+    std::vector<char> replaced(buildings.size(), 0);
+    for (uint32_t i = 0; i < buildings.size(); ++i) {
+        if (!buildings[i].isPart) continue;
+        const Polygon& part = buildings[i].footprint;
+        const Vec2d c = centroid(part.outer);
+        bool found = false;
+        grid.query({c, c}, [&](uint32_t j) {
+            if (holds(buildings[j].footprint, c)) replaced[j] = 1, found = true;
+        });
+        if (found) continue;
+        const double partArea = area(part);
+        grid.query(boxes[i], [&](uint32_t j) {
+            if (!replaced[j] && overlaps(boxes[i], boxes[j]) &&
+                geos.overlapArea(part, buildings[j].footprint) > 0.5 * partArea)
+                replaced[j] = 1;
+        });
+    }
+    size_t kept = 0;
+    for (size_t i = 0; i < buildings.size(); ++i)
+        if (!replaced[i]) buildings[kept++] = std::move(buildings[i]);
+    if (const size_t n = buildings.size() - kept; n > 0) dropped["replaced_by_parts"] += n;
+    buildings.resize(kept);
+}
+
+} // namespace urbis

@@ -1,0 +1,141 @@
+#include "osm/city_builder.h"
+
+#include "osm/building_parts.h"
+#include "osm/geos_polygon.h"
+#include "osm/polygon_ops.h"
+
+#include <algorithm>
+
+namespace urbis {
+
+namespace {
+
+constexpr double kMinArea = 1.0; // m^2
+
+class Builder {
+public:
+    Builder(const GeoBox& box, CityModel& city) : box_(box), projection_(box.centre()), city_(city) {}
+
+    /// Projects, checks and repairs one polygon; nullptr when usable, else the drop reason.
+    const char* makePolygon(const GeoPolygon& g, PolygonRole role, Polygon& out) {
+        out.outer = ring(g.outer);
+        if (out.outer.size() < 3) return "degenerate_footprint";
+        if (!box_.contains(centroidInDegrees(g.outer))) return "outside_bbox";
+        for (const GeoLine& h : g.holes)
+            if (Ring hole = ring(h); hole.size() >= 3) out.holes.push_back(std::move(hole));
+        orient(out);
+        const Validity validity = geos_.makeValid(out);
+        if (validity == Validity::Invalid) return "self_intersecting";
+        if (validity == Validity::Repaired) ++city_.dropped[dropKey(role, "repaired")];
+        if (area(out) < kMinArea) return "too_small";
+        return nullptr;
+    }
+
+    void addBuilding(RawBuilding& raw) {
+        const PolygonRole role = raw.attributes.isPart ? PolygonRole::Part : PolygonRole::Building;
+        if (raw.problem) {
+            ++city_.dropped[dropKey(role, raw.problem)];
+            return;
+        }
+        bool kept = false;
+        for (const GeoPolygon& g : raw.polygons) {
+            Building b = raw.attributes;
+            if (const char* reason = makePolygon(g, role, b.footprint)) {
+                ++city_.dropped[dropKey(role, reason)];
+                continue;
+            }
+            city_.buildings.push_back(std::move(b));
+            kept = true;
+        }
+        if (kept)
+            for (const auto& [issue, n] : raw.tagIssues) city_.dropped[issue] += n;
+    }
+
+    void addArea(const RawArea& raw) {
+        if (raw.problem) {
+            ++city_.dropped[dropKey(PolygonRole::Area, raw.problem)];
+            return;
+        }
+        for (const GeoPolygon& g : raw.polygons) {
+            Area a = raw.attributes;
+            if (const char* reason = makePolygon(g, PolygonRole::Area, a.polygon))
+                ++city_.dropped[dropKey(PolygonRole::Area, reason)];
+            else
+                city_.areas.push_back(std::move(a));
+        }
+    }
+
+    void addRoad(const RawRoad& raw) {
+        if (std::none_of(raw.pieces.begin(), raw.pieces.end(), [](const GeoLine& l) { return l.size() >= 2; })) {
+            ++city_.dropped[raw.pieces.empty() ? "road_incomplete_geometry" : "road_degenerate"];
+            return;
+        }
+        size_t kept = 0;
+        for (const GeoLine& piece : raw.pieces)
+            for (const GeoLine& clipped : clipPolyline(piece, box_)) {
+                Road road = raw.attributes;
+                for (const LonLat p : clipped) road.centerline.push_back(projection_.project(p));
+                const auto same = [](Vec2d a, Vec2d b) { return a.x == b.x && a.y == b.y; };
+                road.centerline.erase(std::unique(road.centerline.begin(), road.centerline.end(), same),
+                                      road.centerline.end());
+                if (road.centerline.size() < 2) continue;
+                city_.roads.push_back(std::move(road));
+                ++kept;
+            }
+        if (kept == 0) ++city_.dropped["road_outside_bbox"];
+    }
+
+    template <typename T>
+    void addPoint(T item, LonLat p, std::vector<T>& out, const char* outsideReason) {
+        if (!box_.contains(p)) {
+            ++city_.dropped[outsideReason];
+            return;
+        }
+        item.position = projection_.project(p);
+        out.push_back(std::move(item));
+    }
+
+    const GeosContext& geos() const { return geos_; }
+
+private:
+    Ring ring(const GeoLine& line) const {
+        Ring r;
+        r.reserve(line.size());
+        for (const LonLat p : line) r.push_back(projection_.project(p));
+        removeDuplicatePoints(r);
+        return r;
+    }
+
+    static LonLat centroidInDegrees(const GeoLine& line) {
+        Ring r;
+        r.reserve(line.size());
+        for (const LonLat p : line) r.push_back({p.lon, p.lat});
+        removeDuplicatePoints(r);
+        const Vec2d c = centroid(r);
+        return {c.x, c.y};
+    }
+
+    GeoBox box_;
+    GeoProjection projection_;
+    GeosContext geos_;
+    CityModel& city_;
+};
+
+} // namespace
+
+CityModel buildCityModel(RawFeatures&& raw, const GeoBox& box) {
+    CityModel city;
+    const LonLat centre = box.centre();
+    city.origin = {true, centre.lat, centre.lon};
+    city.dropped = std::move(raw.issues);
+    Builder builder(box, city);
+    for (RawBuilding& b : raw.buildings) builder.addBuilding(b);
+    for (const RawArea& a : raw.areas) builder.addArea(a);
+    for (const RawRoad& r : raw.roads) builder.addRoad(r);
+    for (auto& [lamp, p] : raw.lamps) builder.addPoint(std::move(lamp), p, city.lamps, "lamp_outside_bbox");
+    for (auto& [tree, p] : raw.trees) builder.addPoint(std::move(tree), p, city.trees, "tree_outside_bbox");
+    replaceOutlinesByParts(city.buildings, builder.geos(), city.dropped);
+    return city;
+}
+
+} // namespace urbis

@@ -1,0 +1,151 @@
+#include "osm/feature_collector.h"
+
+#include "osm/building_tags.h"
+#include "osm/nature_tags.h"
+#include "osm/street_tags.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace urbis {
+
+namespace {
+
+TagLookup lookupIn(const osmium::TagList& tags) {
+    return [&tags](const char* key) { return tags.get_value_by_key(key); };
+}
+
+bool hasYesish(const osmium::TagList& tags, const char* key) {
+    const char* value = tags.get_value_by_key(key);
+    return value && std::strcmp(value, "no") != 0;
+}
+
+/// A way or relation with `building` is a building outline, unless it also has
+/// `building:part`: then it is its own part. `building:part` alone is a part.
+PolygonRole roleOf(const osmium::TagList& tags) {
+    if (hasYesish(tags, "building:part")) return PolygonRole::Part;
+    if (hasYesish(tags, "building")) return PolygonRole::Building;
+    return areaKindFromTags(lookupIn(tags)) ? PolygonRole::Area : PolygonRole::None;
+}
+
+LonLat lonLatOf(const osmium::Location& location) { return {location.lon(), location.lat()}; }
+
+/// The locations of a ring or way; false when one is missing.
+template <typename NodeRefs>
+bool locationsOf(const NodeRefs& nodes, GeoLine& out) {
+    out.clear();
+    out.reserve(nodes.size());
+    for (const osmium::NodeRef& node : nodes) {
+        if (!node.location().valid()) return false;
+        out.push_back(lonLatOf(node.location()));
+    }
+    return true;
+}
+
+} // namespace
+
+osmium::TagsFilter polygonTagsFilter() {
+    osmium::TagsFilter filter{false};
+    for (const char* key : {"building", "building:part", "leisure", "landuse", "natural", "waterway"})
+        filter.add_rule(true, osmium::TagMatcher{key});
+    return filter;
+}
+
+void RelationCatalogue::relation(const osmium::Relation& relation) {
+    const char* type = relation.tags().get_value_by_key("type");
+    if (!type || std::strcmp(type, "multipolygon") != 0) return;
+    const PolygonRole role = roleOf(relation.tags());
+    if (role != PolygonRole::None) roles_[relation.id()] = role;
+}
+
+FeatureCollector::FeatureCollector(const ImportOptions& options, RawFeatures& out)
+    : options_(options), out_(out) {}
+
+void FeatureCollector::node(const osmium::Node& node) {
+    if (!node.location().valid()) return;
+    const LonLat p = lonLatOf(node.location());
+    GeoBox& e = out_.dataExtent;
+    e = {std::min(e.minLon, p.lon), std::min(e.minLat, p.lat), std::max(e.maxLon, p.lon), std::max(e.maxLat, p.lat)};
+    if (node.tags().empty()) return;
+    const TagLookup tags = lookupIn(node.tags());
+    if (node.tags().has_tag("highway", "street_lamp")) out_.lamps.emplace_back(lampFromTags(tags, node.id()), p);
+    if (node.tags().has_tag("natural", "tree")) out_.trees.emplace_back(treeFromTags(tags, node.id()), p);
+}
+
+void FeatureCollector::way(const osmium::Way& way) {
+    const osmium::TagList& tags = way.tags();
+    const PolygonRole role = roleOf(tags);
+    if (role != PolygonRole::None) {
+        std::vector<GeoPolygon> polygons(1);
+        const char* problem = nullptr;
+        if (!way.is_closed()) problem = "unclosed_way";
+        else if (!locationsOf(way.nodes(), polygons[0].outer)) problem = "incomplete_geometry";
+        if (problem) polygons.clear();
+        addPolygonFeature(role, tags, way.id(), std::move(polygons), problem);
+        return;
+    }
+    if (!tags.has_key("highway")) return;
+    RawRoad road;
+    bool reversed = false;
+    road.attributes = roadFromTags(lookupIn(tags), way.id(), reversed, out_.issues);
+    GeoLine piece;
+    bool missing = false;
+    for (const osmium::NodeRef& node : way.nodes()) {
+        if (node.location().valid()) {
+            piece.push_back(lonLatOf(node.location()));
+            continue;
+        }
+        missing = true;
+        if (!piece.empty()) road.pieces.push_back(std::move(piece));
+        piece.clear();
+    }
+    if (!piece.empty()) road.pieces.push_back(std::move(piece));
+    if (missing) ++out_.issues["road_missing_nodes"];
+    if (reversed)
+        for (GeoLine& p : road.pieces) std::reverse(p.begin(), p.end());
+    out_.roads.push_back(std::move(road));
+}
+
+void FeatureCollector::area(const osmium::Area& area) {
+    if (area.from_way()) return; // closed ways are read in way(), where GEOS can repair them
+    assembled_.insert(area.orig_id());
+    const PolygonRole role = roleOf(area.tags());
+    if (role == PolygonRole::None) return;
+    std::vector<GeoPolygon> polygons;
+    const char* problem = nullptr;
+    for (const osmium::OuterRing& outer : area.outer_rings()) {
+        GeoPolygon polygon;
+        bool complete = locationsOf(outer, polygon.outer);
+        for (const osmium::InnerRing& inner : area.inner_rings(outer)) {
+            polygon.holes.emplace_back();
+            complete = complete && locationsOf(inner, polygon.holes.back());
+        }
+        if (!complete) problem = "incomplete_geometry";
+        polygons.push_back(std::move(polygon));
+    }
+    if (polygons.empty() && !problem) problem = "invalid_multipolygon";
+    if (problem) polygons.clear();
+    addPolygonFeature(role, area.tags(), -area.orig_id(), std::move(polygons), problem);
+}
+
+void FeatureCollector::addPolygonFeature(PolygonRole role, const osmium::TagList& tags, int64_t osmId,
+                                         std::vector<GeoPolygon> polygons, const char* problem) {
+    const TagLookup lookup = lookupIn(tags);
+    if (role == PolygonRole::Area) {
+        RawArea a{Area{osmId, *areaKindFromTags(lookup), {}}, std::move(polygons), problem};
+        out_.areas.push_back(std::move(a));
+        return;
+    }
+    RawBuilding b{{}, std::move(polygons), problem, {}};
+    b.attributes = buildingFromTags(lookup, options_, osmId, b.tagIssues);
+    b.attributes.isPart = role == PolygonRole::Part;
+    out_.buildings.push_back(std::move(b));
+}
+
+void countUnassembledRelations(const RelationCatalogue& catalogue, const FeatureCollector& collector,
+                               RawFeatures& out) {
+    for (const auto& [id, role] : catalogue.roles())
+        if (!collector.assembledRelations().contains(id)) ++out.issues[dropKey(role, "incomplete_geometry")];
+}
+
+} // namespace urbis

@@ -1,0 +1,94 @@
+#include "osm/geos_polygon.h"
+
+#include "osm/polygon_ops.h"
+
+#include <geos_c.h>
+
+#include <memory>
+#include <vector>
+
+namespace urbis {
+
+namespace {
+
+using Handle = GEOSContextHandle_t;
+
+struct GeometryDeleter {
+    Handle ctx;
+    void operator()(GEOSGeometry* g) const { GEOSGeom_destroy_r(ctx, g); }
+};
+using GeometryPtr = std::unique_ptr<GEOSGeometry, GeometryDeleter>;
+
+GEOSGeometry* toGeosRing(Handle ctx, const Ring& ring) {
+    std::vector<double> xy;
+    xy.reserve(2 * ring.size() + 2);
+    for (const Vec2d p : ring) xy.insert(xy.end(), {p.x, p.y});
+    xy.insert(xy.end(), {ring.front().x, ring.front().y});
+    GEOSCoordSequence* seq = GEOSCoordSeq_copyFromBuffer_r(ctx, xy.data(), ring.size() + 1, 0, 0);
+    return GEOSGeom_createLinearRing_r(ctx, seq);
+}
+
+GeometryPtr toGeos(Handle ctx, const Polygon& polygon) {
+    GEOSGeometry* shell = toGeosRing(ctx, polygon.outer);
+    std::vector<GEOSGeometry*> holes;
+    for (const Ring& hole : polygon.holes) holes.push_back(toGeosRing(ctx, hole));
+    return GeometryPtr(GEOSGeom_createPolygon_r(ctx, shell, holes.data(), unsigned(holes.size())),
+                       GeometryDeleter{ctx});
+}
+
+Ring fromGeosRing(Handle ctx, const GEOSGeometry* ring) {
+    const GEOSCoordSequence* seq = GEOSGeom_getCoordSeq_r(ctx, ring);
+    unsigned n = 0;
+    GEOSCoordSeq_getSize_r(ctx, seq, &n);
+    Ring out(n);
+    for (unsigned i = 0; i < n; ++i) GEOSCoordSeq_getXY_r(ctx, seq, i, &out[i].x, &out[i].y);
+    removeDuplicatePoints(out);
+    return out;
+}
+
+Polygon fromGeos(Handle ctx, const GEOSGeometry* polygon) {
+    Polygon out;
+    out.outer = fromGeosRing(ctx, GEOSGetExteriorRing_r(ctx, polygon));
+    for (int i = 0, n = GEOSGetNumInteriorRings_r(ctx, polygon); i < n; ++i)
+        out.holes.push_back(fromGeosRing(ctx, GEOSGetInteriorRingN_r(ctx, polygon, i)));
+    orient(out);
+    return out;
+}
+
+} // namespace
+
+GeosContext::GeosContext() : handle_(GEOS_init_r()) {}
+
+GeosContext::~GeosContext() { GEOS_finish_r(handle_); }
+
+Validity GeosContext::makeValid(Polygon& polygon) const {
+    const Handle ctx = handle_;
+    const GeometryPtr geometry = toGeos(ctx, polygon);
+    if (GEOSisValid_r(ctx, geometry.get()) == 1) return Validity::Valid;
+    const GeometryPtr valid(GEOSMakeValid_r(ctx, geometry.get()), GeometryDeleter{ctx});
+    if (!valid) return Validity::Invalid;
+    const GEOSGeometry* largest = nullptr;
+    double largestArea = 0;
+    for (int i = 0, n = GEOSGetNumGeometries_r(ctx, valid.get()); i < n; ++i) {
+        const GEOSGeometry* part = GEOSGetGeometryN_r(ctx, valid.get(), i);
+        double a = 0;
+        if (GEOSGeomTypeId_r(ctx, part) == GEOS_POLYGON && GEOSArea_r(ctx, part, &a) == 1 && a > largestArea) {
+            largest = part;
+            largestArea = a;
+        }
+    }
+    if (!largest) return Validity::Invalid;
+    polygon = fromGeos(ctx, largest);
+    return Validity::Repaired;
+}
+
+double GeosContext::overlapArea(const Polygon& a, const Polygon& b) const {
+    const Handle ctx = handle_;
+    const GeometryPtr ga = toGeos(ctx, a), gb = toGeos(ctx, b);
+    const GeometryPtr common(GEOSIntersection_r(ctx, ga.get(), gb.get()), GeometryDeleter{ctx});
+    double result = 0;
+    if (common) GEOSArea_r(ctx, common.get(), &result);
+    return result;
+}
+
+} // namespace urbis

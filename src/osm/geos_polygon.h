@@ -1,0 +1,34 @@
+// Polygon validity and overlap through GEOS (thread-safe C API, one context per import).
+#pragma once
+
+#include "model/city_model.h"
+
+struct GEOSContextHandle_HS; // geos_c.h's context type, kept out of this header
+
+namespace urbis {
+
+/// What `GeosContext::makeValid` found.
+enum class Validity { Valid, Repaired, Invalid };
+
+/// Owns a GEOS context handle; not copyable.
+class GeosContext {
+public:
+    GeosContext();
+    ~GeosContext();
+    GeosContext(const GeosContext&) = delete;
+    GeosContext& operator=(const GeosContext&) = delete;
+
+    /// Checks a polygon (local metres) with GEOSisValid_r. An invalid one (self-intersecting
+    /// ring, crossing holes, ...) is replaced by the largest polygon GEOSMakeValid_r makes of
+    /// it, oriented and without closing points (Repaired), or left as is when it makes none
+    /// (Invalid).
+    Validity makeValid(Polygon& polygon) const;
+
+    /// Area in m^2 common to two valid polygons.
+    double overlapArea(const Polygon& a, const Polygon& b) const;
+
+private:
+    GEOSContextHandle_HS* handle_;
+};
+
+} // namespace urbis

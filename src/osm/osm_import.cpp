@@ -1,0 +1,66 @@
+#include "osm/osm_import.h"
+
+#include "model/input_error.h"
+#include "osm/city_builder.h"
+#include "osm/osm_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace urbis {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, std::string problem) {
+    std::replace_if(problem.begin(), problem.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+    throw InputError(path + ": " + problem);
+}
+
+void checkOptions(const std::string& path, const ImportOptions& options) {
+    if (!(options.minBuildingHeight > 0.0f && options.minBuildingHeight <= options.maxBuildingHeight &&
+          options.maxBuildingHeight <= 1000.0f))
+        fail(path, "building height range must satisfy 0 < min <= max <= 1000 m");
+    if (!(options.metresPerLevel > 0.0f && options.metresPerLevel < 20.0f))
+        fail(path, "metres per level must lie in (0, 20)");
+    if (options.bbox) {
+        const auto [w, s, e, n] = *options.bbox;
+        if (!(w >= -180.0 && w < e && e <= 180.0 && s >= -90.0 && s < n && n <= 90.0))
+            fail(path, "bbox must be minLon,minLat,maxLon,maxLat with min < max, in degrees");
+    }
+}
+
+void checkReadable(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) fail(path, "no such file");
+    if (!std::filesystem::is_regular_file(path, ec)) fail(path, "not a regular file");
+    if (!std::ifstream(path, std::ios::binary)) fail(path, "cannot open file for reading");
+    if (std::filesystem::file_size(path, ec) == 0) fail(path, "empty file");
+}
+
+} // namespace
+
+CityModel importOsm(const std::string& path, const ImportOptions& options) {
+    checkOptions(path, options);
+    checkReadable(path);
+    RawFeatures raw;
+    try {
+        raw = readOsm(path, options);
+    } catch (const std::exception& e) {
+        fail(path, std::string("cannot read OSM data: ") + e.what());
+    }
+    GeoBox box = raw.headerBox;
+    if (options.bbox) box = {(*options.bbox)[0], (*options.bbox)[1], (*options.bbox)[2], (*options.bbox)[3]};
+    else if (!box.valid()) box = raw.dataExtent;
+    if (!box.valid()) fail(path, "no nodes with locations, so no box to import");
+
+    CityModel city = buildCityModel(std::move(raw), box);
+    if (city.buildings.empty())
+        fail(path, "no buildings inside the box (" + std::to_string(box.minLon) + "," + std::to_string(box.minLat) +
+                       "," + std::to_string(box.maxLon) + "," + std::to_string(box.maxLat) + ")");
+    city.source = std::filesystem::path(path).filename().string();
+    return city;
+}
+
+} // namespace urbis

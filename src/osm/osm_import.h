@@ -1,0 +1,30 @@
+// The OSM importer: an OpenStreetMap file in, a CityModel in local metres out.
+#pragma once
+
+#include "model/city_model.h"
+#include "osm/import_options.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+
+namespace urbis {
+
+/// Reads an OSM file (.osm, .osm.pbf, .osm.bz2, .osm.gz; the format comes from the name)
+/// with libosmium into a CityModel: buildings and building:parts (outer rings + holes;
+/// a building outline that holds parts is replaced by them), roads, street lamps, trees,
+/// parks and water. Everything is projected to metres on the plane tangent to the WGS84
+/// ellipsoid at the centre of the crop box (options.bbox, else the header box, else the
+/// data extent) and cropped to that box. Objects that cannot be used are dropped and
+/// counted in CityModel::dropped by reason; they are never fatal.
+/// Throws InputError with one line "<path>: <problem>" for a missing, unreadable or
+/// malformed file, bad options, or a box that holds no building.
+CityModel importOsm(const std::string& path, const ImportOptions& options);
+
+/// The JSON object `urbis inspect --json` prints for a city: counts (buildings, all
+/// building records including parts; building_parts; roads; lamps; trees; parks; water),
+/// dropped (reason -> count), extent_m {width, depth} of the model's geometry in metres,
+/// origin {lat, lon} in degrees, source, and heights by source.
+nlohmann::json inspectJson(const CityModel& city);
+
+} // namespace urbis

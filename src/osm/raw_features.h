@@ -1,0 +1,71 @@
+// What the OSM reader collects: attributes already read from tags, geometry still in
+// degrees, because the crop box and projection are known only after the whole file.
+#pragma once
+
+#include "model/city_model.h"
+#include "osm/crop.h"
+#include "osm/geo_projection.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace urbis {
+
+using GeoLine = std::vector<LonLat>;
+
+/// What a closed way or multipolygon stands for.
+enum class PolygonRole : uint8_t { None, Building, Part, Area };
+
+/// The key under which a drop `reason` is counted for a role: building outlines use the
+/// bare reason ("outside_bbox"), the others a prefix ("part_outside_bbox", "area_...").
+inline std::string dropKey(PolygonRole role, const char* reason) {
+    switch (role) {
+    case PolygonRole::Part: return std::string("part_") + reason;
+    case PolygonRole::Area: return std::string("area_") + reason;
+    default: return reason;
+    }
+}
+
+/// An outer ring with its holes, in degrees; rings need not be closed or oriented.
+struct GeoPolygon {
+    GeoLine outer;
+    std::vector<GeoLine> holes;
+};
+
+/// A building or building:part: attributes from tags, its polygons (a multipolygon
+/// relation may have several outer rings), or why it has none usable.
+struct RawBuilding {
+    Building attributes;
+    std::vector<GeoPolygon> polygons;
+    const char* problem = nullptr; ///< a drop reason ("incomplete_geometry", ...) or nullptr
+    std::map<std::string, uint64_t> tagIssues; ///< counted only if the building is kept
+};
+
+/// A park, grass, forest or water area; like RawBuilding.
+struct RawArea {
+    Area attributes;
+    std::vector<GeoPolygon> polygons;
+    const char* problem = nullptr;
+};
+
+/// A highway way: attributes and its centerline pieces (split where nodes are missing).
+struct RawRoad {
+    Road attributes;
+    std::vector<GeoLine> pieces;
+};
+
+struct RawFeatures {
+    std::vector<RawBuilding> buildings;
+    std::vector<RawArea> areas;
+    std::vector<RawRoad> roads;
+    std::vector<std::pair<Lamp, LonLat>> lamps;
+    std::vector<std::pair<Tree, LonLat>> trees;
+    GeoBox headerBox;                             ///< invalid when the file has none
+    GeoBox dataExtent{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL}; ///< of all node locations
+    std::map<std::string, uint64_t> issues;       ///< tag problems and incomplete objects
+};
+
+} // namespace urbis

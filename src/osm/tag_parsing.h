@@ -1,0 +1,48 @@
+// Pure parsers of OSM tag values: numbers with units, counts, directions and the tables
+// that map tag values to model enums. No geometry, no libosmium: tested on their own.
+#pragma once
+
+#include "model/city_model.h"
+
+#include <optional>
+#include <string_view>
+
+namespace urbis {
+
+/// A length in metres from values like "12", "12 m", "12.5m", "12,5", "40'", "40 ft",
+/// "40'6\"". Negative, NaN, infinite, absurd (> 1000 m) or unparsable values give nullopt.
+std::optional<double> parseLength(std::string_view value);
+
+/// A storey count ("3", "2.5"), in [0, 300]; anything else gives nullopt.
+std::optional<double> parseLevels(std::string_view value);
+
+/// A whole number ("-1", "4"); anything else gives nullopt.
+std::optional<int> parseInteger(std::string_view value);
+
+/// A compass direction in degrees clockwise from north, [0, 360): a number or a point
+/// of the 16-wind rose ("N", "NE", "SSW", ...).
+std::optional<float> parseDirection(std::string_view value);
+
+/// A light's colour temperature in kelvin from `light:colour`: "3000", "3000 K", or a
+/// name ("white", "warm_white", "orange", "yellow", ...).
+std::optional<float> parseColourTemperature(std::string_view value);
+
+/// True for "yes", "true" and "1".
+bool isYes(std::string_view value);
+
+/// `roof:shape` value -> RoofShape (Unknown for unlisted values).
+RoofShape parseRoofShape(std::string_view value);
+
+/// `building=` value -> BuildingType (Generic for "yes" and unlisted values).
+BuildingType parseBuildingType(std::string_view value);
+
+/// `building:material` value -> BuildingMaterial (Unknown for unlisted values).
+BuildingMaterial parseMaterial(std::string_view value);
+
+/// `highway=` value -> HighwayClass (Other for unlisted values).
+HighwayClass parseHighwayClass(std::string_view value);
+
+/// `sidewalk=` value -> Sidewalk (Unknown for unlisted values).
+Sidewalk parseSidewalk(std::string_view value);
+
+} // namespace urbis
