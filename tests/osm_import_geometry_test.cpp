@@ -182,3 +182,16 @@ TEST(OsmImportGeometry, RoadsAreClippedLampsAndTreesCropped) {
     EXPECT_NEAR(city.origin.lon, 10.0015, 1e-9);
     EXPECT_EQ(city.source, "roads.osm");
 }
+
+TEST(OsmImportGeometry, BboxOptionOverridesTheHeaderBox) {
+    const std::string village = URBIS_OSMNX_DATA "/planet_10.068,48.135_10.071,48.137.osm";
+    const CityModel whole = importOsm(village, {});
+    ImportOptions options;
+    options.bbox = std::array<double, 4>{10.068, 48.135, 10.0695, 48.137}; // the western half
+    const CityModel west = importOsm(village, options);
+    EXPECT_LT(west.buildings.size(), whole.buildings.size());
+    EXPECT_GT(west.buildings.size(), 0u);
+    EXPECT_NEAR(west.origin.lon, 10.06875, 1e-9);
+    EXPECT_NEAR(whole.origin.lon, 10.0695, 1e-9);
+    for (const Building& b : west.buildings) EXPECT_LT(centroid(b.footprint.outer).x, 60.0); // box edge + slack
+}
