@@ -77,8 +77,11 @@ void replaceOutlinesByParts(std::vector<Building>& buildings, const GeosContext&
         });
     }
     size_t kept = 0;
-    for (size_t i = 0; i < buildings.size(); ++i)
-        if (!replaced[i]) buildings[kept++] = std::move(buildings[i]);
+    for (size_t i = 0; i < buildings.size(); ++i) {
+        if (replaced[i]) continue;
+        if (kept != i) buildings[kept] = std::move(buildings[i]);
+        ++kept;
+    }
     if (const size_t n = buildings.size() - kept; n > 0) dropped["replaced_by_parts"] += n;
     buildings.resize(kept);
 }

@@ -19,31 +19,33 @@ Rgb fromSrgbHex(uint32_t rgb) {
 }
 
 // CSS Color 3 names (https://www.w3.org/TR/css-color-3/, as OSM colour tags use them), plus
-// "cream"; sRGB, sorted by name for binary search.
-constexpr std::array<std::pair<std::string_view, uint32_t>, 148> kNamedColours = {{
+// OSM's own cream, light_brown, dark_brown, brick_red and yellow-brown; sRGB, sorted by
+// name for binary search.
+constexpr std::array<std::pair<std::string_view, uint32_t>, 152> kNamedColours = {{
     {"aliceblue", 0xf0f8ff}, {"antiquewhite", 0xfaebd7}, {"aqua", 0x00ffff},
     {"aquamarine", 0x7fffd4}, {"azure", 0xf0ffff}, {"beige", 0xf5f5dc},
     {"bisque", 0xffe4c4}, {"black", 0x000000}, {"blanchedalmond", 0xffebcd},
-    {"blue", 0x0000ff}, {"blueviolet", 0x8a2be2}, {"brown", 0xa52a2a},
-    {"burlywood", 0xdeb887}, {"cadetblue", 0x5f9ea0}, {"chartreuse", 0x7fff00},
-    {"chocolate", 0xd2691e}, {"coral", 0xff7f50}, {"cornflowerblue", 0x6495ed},
-    {"cornsilk", 0xfff8dc}, {"cream", 0xfffdd0}, {"crimson", 0xdc143c},
-    {"cyan", 0x00ffff}, {"darkblue", 0x00008b}, {"darkcyan", 0x008b8b},
-    {"darkgoldenrod", 0xb8860b}, {"darkgray", 0xa9a9a9}, {"darkgreen", 0x006400},
-    {"darkgrey", 0xa9a9a9}, {"darkkhaki", 0xbdb76b}, {"darkmagenta", 0x8b008b},
-    {"darkolivegreen", 0x556b2f}, {"darkorange", 0xff8c00}, {"darkorchid", 0x9932cc},
-    {"darkred", 0x8b0000}, {"darksalmon", 0xe9967a}, {"darkseagreen", 0x8fbc8f},
-    {"darkslateblue", 0x483d8b}, {"darkslategray", 0x2f4f4f}, {"darkslategrey", 0x2f4f4f},
-    {"darkturquoise", 0x00ced1}, {"darkviolet", 0x9400d3}, {"deeppink", 0xff1493},
-    {"deepskyblue", 0x00bfff}, {"dimgray", 0x696969}, {"dimgrey", 0x696969},
-    {"dodgerblue", 0x1e90ff}, {"firebrick", 0xb22222}, {"floralwhite", 0xfffaf0},
-    {"forestgreen", 0x228b22}, {"fuchsia", 0xff00ff}, {"gainsboro", 0xdcdcdc},
-    {"ghostwhite", 0xf8f8ff}, {"gold", 0xffd700}, {"goldenrod", 0xdaa520},
-    {"gray", 0x808080}, {"green", 0x008000}, {"greenyellow", 0xadff2f},
-    {"grey", 0x808080}, {"honeydew", 0xf0fff0}, {"hotpink", 0xff69b4},
-    {"indianred", 0xcd5c5c}, {"indigo", 0x4b0082}, {"ivory", 0xfffff0},
-    {"khaki", 0xf0e68c}, {"lavender", 0xe6e6fa}, {"lavenderblush", 0xfff0f5},
-    {"lawngreen", 0x7cfc00}, {"lemonchiffon", 0xfffacd}, {"lightblue", 0xadd8e6},
+    {"blue", 0x0000ff}, {"blueviolet", 0x8a2be2}, {"brickred", 0xcb4154},
+    {"brown", 0xa52a2a}, {"burlywood", 0xdeb887}, {"cadetblue", 0x5f9ea0},
+    {"chartreuse", 0x7fff00}, {"chocolate", 0xd2691e}, {"coral", 0xff7f50},
+    {"cornflowerblue", 0x6495ed}, {"cornsilk", 0xfff8dc}, {"cream", 0xfffdd0},
+    {"crimson", 0xdc143c}, {"cyan", 0x00ffff}, {"darkblue", 0x00008b},
+    {"darkbrown", 0x654321}, {"darkcyan", 0x008b8b}, {"darkgoldenrod", 0xb8860b},
+    {"darkgray", 0xa9a9a9}, {"darkgreen", 0x006400}, {"darkgrey", 0xa9a9a9},
+    {"darkkhaki", 0xbdb76b}, {"darkmagenta", 0x8b008b}, {"darkolivegreen", 0x556b2f},
+    {"darkorange", 0xff8c00}, {"darkorchid", 0x9932cc}, {"darkred", 0x8b0000},
+    {"darksalmon", 0xe9967a}, {"darkseagreen", 0x8fbc8f}, {"darkslateblue", 0x483d8b},
+    {"darkslategray", 0x2f4f4f}, {"darkslategrey", 0x2f4f4f}, {"darkturquoise", 0x00ced1},
+    {"darkviolet", 0x9400d3}, {"deeppink", 0xff1493}, {"deepskyblue", 0x00bfff},
+    {"dimgray", 0x696969}, {"dimgrey", 0x696969}, {"dodgerblue", 0x1e90ff},
+    {"firebrick", 0xb22222}, {"floralwhite", 0xfffaf0}, {"forestgreen", 0x228b22},
+    {"fuchsia", 0xff00ff}, {"gainsboro", 0xdcdcdc}, {"ghostwhite", 0xf8f8ff},
+    {"gold", 0xffd700}, {"goldenrod", 0xdaa520}, {"gray", 0x808080},
+    {"green", 0x008000}, {"greenyellow", 0xadff2f}, {"grey", 0x808080},
+    {"honeydew", 0xf0fff0}, {"hotpink", 0xff69b4}, {"indianred", 0xcd5c5c},
+    {"indigo", 0x4b0082}, {"ivory", 0xfffff0}, {"khaki", 0xf0e68c},
+    {"lavender", 0xe6e6fa}, {"lavenderblush", 0xfff0f5}, {"lawngreen", 0x7cfc00},
+    {"lemonchiffon", 0xfffacd}, {"lightblue", 0xadd8e6}, {"lightbrown", 0xc4a484},
     {"lightcoral", 0xf08080}, {"lightcyan", 0xe0ffff}, {"lightgoldenrodyellow", 0xfafad2},
     {"lightgray", 0xd3d3d3}, {"lightgreen", 0x90ee90}, {"lightgrey", 0xd3d3d3},
     {"lightpink", 0xffb6c1}, {"lightsalmon", 0xffa07a}, {"lightseagreen", 0x20b2aa},
@@ -70,7 +72,7 @@ constexpr std::array<std::pair<std::string_view, uint32_t>, 148> kNamedColours =
     {"teal", 0x008080}, {"thistle", 0xd8bfd8}, {"tomato", 0xff6347},
     {"turquoise", 0x40e0d0}, {"violet", 0xee82ee}, {"wheat", 0xf5deb3},
     {"white", 0xffffff}, {"whitesmoke", 0xf5f5f5}, {"yellow", 0xffff00},
-    {"yellowgreen", 0x9acd32}}};
+    {"yellowbrown", 0xb8860b}, {"yellowgreen", 0x9acd32}}};
 
 struct TypeColours {
     BuildingType type;
@@ -129,7 +131,7 @@ std::optional<Rgb> parseColour(std::string_view value) {
     if (!value.empty() && value.front() == '#') return parseHex(value.substr(1));
     std::string name;
     for (char c : value)
-        if (c != ' ' && c != '_') name += char(std::tolower(static_cast<unsigned char>(c)));
+        if (c != ' ' && c != '_' && c != '-') name += char(std::tolower(static_cast<unsigned char>(c)));
     const auto it = std::lower_bound(kNamedColours.begin(), kNamedColours.end(), std::string_view(name),
                                      [](const auto& entry, std::string_view key) { return entry.first < key; });
     if (it == kNamedColours.end() || it->first != name) return std::nullopt;

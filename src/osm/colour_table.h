@@ -13,7 +13,8 @@ namespace urbis {
 float linearFromSrgb(float encoded);
 
 /// Linear colour of a `building:colour` / `roof:colour` value: a name ("red", "white",
-/// "grey", ...; case-insensitive) or "#rgb" / "#rrggbb". nullopt when unparsable.
+/// "grey", "light_brown", ...: CSS names, case, blanks, '_' and '-' ignored) or "#rgb" /
+/// "#rrggbb". nullopt when unparsable.
 std::optional<Rgb> parseColour(std::string_view value);
 
 /// Wall and roof colours (linear) of a building type, used when no colour tag and no

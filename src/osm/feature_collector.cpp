@@ -107,7 +107,6 @@ void FeatureCollector::way(const osmium::Way& way) {
 }
 
 void FeatureCollector::area(const osmium::Area& area) {
-    if (area.from_way()) return; // closed ways are read in way(), where GEOS can repair them
     assembled_.insert(area.orig_id());
     const PolygonRole role = roleOf(area.tags());
     if (role == PolygonRole::None) return;

@@ -43,7 +43,8 @@ public:
     void node(const osmium::Node& node);
     /// Highways, and closed ways that are buildings, parts or areas.
     void way(const osmium::Way& way);
-    /// Multipolygon relations assembled by osmium::area::MultipolygonManager.
+    /// Multipolygon relations assembled by osmium::area::MultipolygonManager (configured not
+    /// to assemble closed ways: way() reads those, so that GEOS can repair them).
     void area(const osmium::Area& area);
     /// Ids of the relations that reached area().
     const std::unordered_set<osmium::object_id_type>& assembledRelations() const { return assembled_; }

@@ -23,8 +23,7 @@ void ecefFromLonLat(LonLat p, double out[3]) {
 } // namespace
 
 GeoProjection::GeoProjection(LonLat origin)
-    : origin_(origin),
-      sinLat_(std::sin(origin.lat * kRadians)), cosLat_(std::cos(origin.lat * kRadians)),
+    : sinLat_(std::sin(origin.lat * kRadians)), cosLat_(std::cos(origin.lat * kRadians)),
       sinLon_(std::sin(origin.lon * kRadians)), cosLon_(std::cos(origin.lon * kRadians)) {
     ecefFromLonLat(origin, ecef0_);
 }

@@ -21,11 +21,7 @@ public:
     /// Local metres (x east, y north) of a position in degrees.
     Vec2d project(LonLat p) const;
 
-    /// The origin in degrees, as given.
-    LonLat origin() const { return origin_; }
-
 private:
-    LonLat origin_;
     double ecef0_[3];
     double sinLat_, cosLat_, sinLon_, cosLon_;
 };

@@ -13,6 +13,8 @@ namespace urbis {
 
 namespace {
 
+constexpr double kExtentPadding = 1e-6; // degrees, about 0.1 m
+
 [[noreturn]] void fail(const std::string& path, std::string problem) {
     std::replace_if(problem.begin(), problem.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
     throw InputError(path + ": " + problem);
@@ -51,9 +53,13 @@ CityModel importOsm(const std::string& path, const ImportOptions& options) {
         fail(path, std::string("cannot read OSM data: ") + e.what());
     }
     GeoBox box = raw.headerBox;
-    if (options.bbox) box = {(*options.bbox)[0], (*options.bbox)[1], (*options.bbox)[2], (*options.bbox)[3]};
-    else if (!box.valid()) box = raw.dataExtent;
-    if (!box.valid()) fail(path, "no nodes with locations, so no box to import");
+    if (options.bbox) {
+        box = {(*options.bbox)[0], (*options.bbox)[1], (*options.bbox)[2], (*options.bbox)[3]};
+    } else if (!box.valid()) {
+        const GeoBox& e = raw.dataExtent; // padded, so that a single node or a meridian gives a box
+        if (e.minLon > e.maxLon) fail(path, "no nodes with locations");
+        box = {e.minLon - kExtentPadding, e.minLat - kExtentPadding, e.maxLon + kExtentPadding, e.maxLat + kExtentPadding};
+    }
 
     CityModel city = buildCityModel(std::move(raw), box);
     if (city.buildings.empty())
