@@ -45,7 +45,7 @@ TEST(BuildingMesher, CourtyardHasWallsRoofAndHole) {
     // 8 ring edges -> 16 wall triangles; a square annulus needs 8 roof triangles.
     EXPECT_EQ(out.trianglesByKind["walls"], 16u);
     EXPECT_EQ(out.trianglesByKind["roofs"], 8u);
-    EXPECT_EQ(out.mesh.size(), 16u + 8u + 2u);
+    EXPECT_EQ(out.mesh.size(), 16u + 8u);
     // No roof triangle covers the courtyard's centre.
     for (size_t i = 0; i < out.mesh.size(); ++i) {
         const Triangle& t = out.mesh.triangles[i];

@@ -9,10 +9,10 @@ using namespace urbis;
 
 namespace {
 
-/// A horizontal square of two triangles, 200 km wide, so that every camera ray below hits it.
+/// A horizontal square of two triangles, 400 m wide; the cameras below see only its middle.
 Scene planeScene(Vec3f albedo) {
     TriangleMesh mesh;
-    float h = 1.0e5f;
+    float h = 200.0f;
     Vec3f a{-h, 0, -h}, b{h, 0, -h}, c{h, 0, h}, d{-h, 0, h};
     mesh.add({a, d, c}, {0, 0});
     mesh.add({a, c, b}, {0, 0});
@@ -51,6 +51,19 @@ TEST(AnalyticRadiance, LambertianPlaneUnderUniformSky) {
     EXPECT_GT(counters.rays, 32u * 24u * 256u);
 }
 
+// The analytic ground plane must give the same answer as the triangles.
+TEST(AnalyticRadiance, GroundPlaneUnderUniformSky) {
+    Vec3f albedo{0.3f, 0.6f, 0.9f};
+    Vec3f sky{2.0f, 1.0f, 0.5f};
+    Scene scene = Scene::build(TriangleMesh{}, {Material{albedo}});
+    scene.ground = GroundPlane{-3.0f, 0, true};
+    scene.sky = Sky::uniform(sky);
+    Camera camera = cameraFromHeading(Vec3f{1000, 40, -2000}, 10.0f, -30.0f, 40.0f, 32.0f / 24.0f);
+    RenderCounters counters;
+    LinearImage image = renderCpu(scene.view(), camera, smallSettings(64), false, counters);
+    expectImageNear(image, albedo * sky, 0.01f);
+}
+
 // Adding a sun of irradiance E at elevation theta: rho * (L + E * <cos> / pi), where the disk's
 // mean cosine over a uniform cone of half-angle r is sin(theta) * (1 + cos r) / 2.
 TEST(AnalyticRadiance, LambertianPlaneUnderSkyAndSun) {
@@ -73,7 +86,7 @@ TEST(AnalyticRadiance, LambertianPlaneUnderSkyAndSun) {
 TEST(AnalyticRadiance, ShadowedPlaneSeesNoSun) {
     Vec3f albedo{0.5f, 0.5f, 0.5f};
     TriangleMesh mesh;
-    float h = 1.0e5f, r = 50.0f, top = 20.0f;
+    float h = 200.0f, r = 50.0f, top = 20.0f;
     mesh.add({{-h, 0, -h}, {-h, 0, h}, {h, 0, h}}, {0, 0});
     mesh.add({{-h, 0, -h}, {h, 0, h}, {h, 0, -h}}, {0, 0});
     mesh.add({{-r, top, -r}, {-r, top, r}, {r, top, r}}, {1, 1});  // a black roof straight overhead

@@ -6,6 +6,7 @@
 #include "io/atomic_file.h"
 #include "layout/city_layout.h"
 #include "model/input_error.h"
+#include "osm/geo_projection.h"
 #include "osm/osm_import.h"
 #include "scene/camera_framing.h"
 #include "scene/scene.h"
@@ -70,7 +71,9 @@ void checkOutputFolder(const std::string& path) {
 }
 
 CityModel loadCity(const RenderOptions& o) {
+    std::optional<std::array<double, 4>> bbox = parseBbox(o.bbox);
     if (o.osmFile.empty()) {
+        if (bbox) throw InputError("--bbox: crops an OSM file and needs --osm");
         LayoutParams params;
         params.buildings = o.buildings;
         params.seed = o.settings.seed;
@@ -81,7 +84,7 @@ CityModel loadCity(const RenderOptions& o) {
     params.seed = o.settings.seed;
     params.metresPerLevel = o.metresPerLevel;
     parseHeightRange(o.heightRange, params.minBuildingHeight, params.maxBuildingHeight);
-    params.bbox = parseBbox(o.bbox);
+    params.bbox = bbox;
     return importOsm(o.osmFile, params);
 }
 
@@ -95,7 +98,7 @@ Camera chooseCamera(const RenderOptions& o, const CityModel& city, const Bounds3
     if (!o.cameraGeo.empty()) {
         if (!city.origin.valid) throw InputError("--camera-geo: needs a city imported with --osm");
         std::vector<double> c = parseNumberList("--camera-geo", o.cameraGeo, ',', 5, 5);
-        Vec2d local = GeoProjection(city.origin.lat, city.origin.lon).toLocal(c[1], c[0]);
+        Vec2d local = GeoProjection(LonLat{city.origin.lon, city.origin.lat}).project(LonLat{c[0], c[1]});
         return cameraFromHeading(Vec3f{float(local.x), float(c[2]), float(-local.y)}, float(c[3]), float(c[4]),
                                  o.fovDeg, aspect);
     }
@@ -134,6 +137,7 @@ void runRender(const RenderOptions& o) {
 
     t0 = Clock::now();
     Scene scene = Scene::build(cityMesh.mesh, cityMesh.materials);
+    scene.ground = GroundPlane{0.0f, cityMesh.groundMaterial, true};
     scene.sun = sun;
     double secondsBvh = secondsSince(t0);
 

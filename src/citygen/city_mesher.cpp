@@ -31,18 +31,6 @@ struct Chunk {
     uint64_t failed = 0;
 };
 
-/// A square ground plane of two triangles centred on the city, wide enough to reach the horizon
-/// of any camera the automatic framing picks.
-void addGround(const Bounds3f& city, TriangleInfo info, TriangleMesh& mesh) {
-    Vec3f c = city.empty() ? Vec3f{} : city.centre();
-    Vec3f e = city.empty() ? Vec3f{100, 0, 100} : city.extent();
-    float half = 20.0f * fmaxf(fmaxf(e.x, e.z), 100.0f);
-    Vec3f a{c.x - half, 0, c.z - half}, b{c.x + half, 0, c.z - half};
-    Vec3f d{c.x - half, 0, c.z + half}, f{c.x + half, 0, c.z + half};
-    mesh.add({a, d, f}, info);
-    mesh.add({a, f, b}, info);
-}
-
 } // namespace
 
 CityMesh meshCity(const CityModel& city) {
@@ -81,9 +69,9 @@ CityMesh meshCity(const CityModel& city) {
         out.cityBounds.extend(t.p1);
         out.cityBounds.extend(t.p2);
     }
-    addGround(out.cityBounds, TriangleInfo{groundMaterial, kGroundObject}, out.mesh);
+    out.groundMaterial = groundMaterial;
     out.materials = std::move(table.materials);
-    out.trianglesByKind = {{"walls", walls}, {"roofs", roofs}, {"ground", 2}};
+    out.trianglesByKind = {{"walls", walls}, {"roofs", roofs}};
     if (failed) out.dropped["triangulation_failed"] = failed;
     return out;
 }

@@ -1,4 +1,4 @@
-// CityModel -> stored triangles: every building's walls and roof, and a ground plane.
+// CityModel -> stored triangles: every building's walls and roof, and the ground's material.
 #pragma once
 
 #include "citygen/triangle_mesh.h"
@@ -11,18 +11,16 @@
 
 namespace urbis {
 
-/// Object ids: 0 is the ground, building i of the CityModel is i + 1.
-constexpr uint32_t kGroundObject = 0;
-
 struct CityMesh {
     TriangleMesh mesh;
     std::vector<Material> materials;
+    uint32_t groundMaterial = 0;               ///< the ground plane's entry in materials
     Bounds3f cityBounds;                       ///< world bounds of the buildings (ground excluded)
     std::map<std::string, size_t> trianglesByKind;
     std::map<std::string, uint64_t> dropped;   ///< buildings that could not be meshed, by reason
 };
 
-/// Meshes the whole city in parallel; the result does not depend on the thread count.
+/// Meshes the whole city (object id of building i is i + 1; 0 is the ground) in parallel; the result does not depend on the thread count.
 CityMesh meshCity(const CityModel& city);
 
 } // namespace urbis

@@ -6,7 +6,7 @@
 #include "math/sampling.h"
 #include "scene/camera.h"
 #include "scene/render_settings.h"
-#include "scene/scene_view.h"
+#include "geometry/scene_intersect.h"
 
 namespace urbis {
 
@@ -32,18 +32,15 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
     PathSample out;
     Vec3f throughput{1, 1, 1};
     for (uint32_t depth = 0;; ++depth) {
-        Hit hit = intersectClosest(scene.geometry, ray);
+        SurfaceHit hit = intersectScene(scene, ray);
         ++out.rays;
         if (!hit.valid()) {
             out.radiance += throughput * scene.sky.radiance(ray.dir);
             break;
         }
-        const Triangle& tri = scene.geometry.triangles[hit.prim];
-        Vec3f normal = normalize(cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
-        if (dot(normal, ray.dir) > 0.0f) normal = -normal;
-        Vec3f albedo = scene.materials[scene.triangleInfo[hit.prim].material].albedo;
-        Vec3f position = ray.origin + ray.dir * hit.t;
-        Vec3f origin = offsetRayOrigin(position, normal);
+        Vec3f normal = hit.normal;
+        Vec3f albedo = scene.materials[hit.material].albedo;
+        Vec3f origin = offsetRayOrigin(ray.origin + ray.dir * hit.t, normal);
 
         // Next-event estimation towards the sun's disk; the sky lookup never includes the disk.
         float u1 = rng.draw(), u2 = rng.draw();
@@ -53,7 +50,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             if (cosine > 0.0f) {
                 Ray shadow{origin, toSun};
                 ++out.rays;
-                if (!occluded(scene.geometry, shadow))
+                if (!occludedScene(scene, shadow))
                     out.radiance += throughput * albedo * scene.sun.radiance * (cosine / (kPi * scene.sun.pdf()));
             }
         }

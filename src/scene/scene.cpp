@@ -25,7 +25,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials) {
 
 SceneView Scene::view() const {
     return SceneView{TriangleSceneView{nodes.data(), triangles.data(), uint32_t(triangles.size())}, info.data(),
-                     materials.data(), sun, sky};
+                     materials.data(), ground, sun, sky};
 }
 
 SceneMemory Scene::memory() const {

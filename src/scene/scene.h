@@ -20,6 +20,7 @@ struct Scene {
     std::vector<Triangle> triangles;      ///< in BVH leaf order
     std::vector<TriangleInfo> info;       ///< same order as triangles
     std::vector<Material> materials;
+    GroundPlane ground;
     Sun sun;
     Sky sky;
 

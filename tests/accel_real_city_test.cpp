@@ -1,0 +1,58 @@
+// The BVH over a real imported city against brute force: 100k random rays, same triangle and distance.
+#include "citygen/city_mesher.h"
+#include "math/rng.h"
+#include "osm/osm_import.h"
+#include "scene/scene.h"
+
+#include <gtest/gtest.h>
+
+using namespace urbis;
+
+namespace {
+
+Hit bruteForce(const Scene& scene, const Ray& ray) {
+    Hit best;
+    float tmax = ray.tmax;
+    for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
+        float t, u, v;
+        Ray r = ray;
+        r.tmax = tmax;
+        if (intersectTriangle(scene.triangles[i], r, t, u, v)) {
+            best = {i, t, u, v};
+            tmax = t;
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+TEST(AccelRealCity, ClosestHitsEqualBruteForceOnTheBavarianVillage) {
+    CityModel city = importOsm(URBIS_OSMNX_DATA "/planet_10.068,48.135_10.071,48.137.osm", ImportOptions{});
+    CityMesh mesh = meshCity(city);
+    Scene scene = Scene::build(mesh.mesh, mesh.materials);
+    ASSERT_GT(scene.triangles.size(), 500u);
+    SceneView view = scene.view();
+    Bounds3f b = mesh.cityBounds;
+    size_t hits = 0, mismatches = 0;
+    constexpr uint32_t kRays = 100000;
+    for (uint32_t i = 0; i < kRays; ++i) {
+        SampleStream rng{12345u, i, 0};
+        // Origins in a box 20% larger than the city and up to twice its height; directions uniform.
+        Vec3f o{b.lo.x + (1.4f * rng.draw() - 0.2f) * b.extent().x, 2.0f * rng.draw() * b.hi.y,
+                b.lo.z + (1.4f * rng.draw() - 0.2f) * b.extent().z};
+        float z = 2.0f * rng.draw() - 1.0f, phi = 2.0f * kPi * rng.draw(), s = std::sqrt(1.0f - z * z);
+        Ray ray{o, Vec3f{s * std::cos(phi), z, s * std::sin(phi)}};
+        Hit fast = intersectClosest(view.geometry, ray);
+        Hit slow = bruteForce(scene, ray);
+        ASSERT_EQ(fast.valid(), slow.valid()) << "ray " << i;
+        EXPECT_EQ(occluded(view.geometry, ray), slow.valid()) << "ray " << i;
+        if (!slow.valid()) continue;
+        ++hits;
+        // Equal distances may belong to two triangles sharing the hit edge: then either is right.
+        if (fast.prim != slow.prim && fast.t != slow.t) ++mismatches;
+        EXPECT_NEAR(fast.t, slow.t, 1e-6f * slow.t) << "ray " << i;
+    }
+    EXPECT_EQ(mismatches, 0u);
+    EXPECT_GT(hits, kRays / 4);
+}
