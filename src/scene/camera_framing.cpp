@@ -12,8 +12,8 @@ Camera frameCity(const Bounds3f& cityBounds, float fovYDeg, float aspect) {
     Vec3f target{centre.x, 0.25f * b.hi.y, centre.z};
     float radius = 0.5f * length(b.extent());
     float halfFov = 0.5f * fminf(fovYDeg, fovYDeg * aspect) * kPi / 180.0f;
-    // A city is flat: the sphere bound over-estimates what the view must hold, hence 0.8.
-    float distance = 0.8f * radius / std::tan(halfFov);
+    // A city is flat: the sphere bound over-estimates what the view must hold, hence 0.62.
+    float distance = 0.62f * radius / std::tan(halfFov);
     Vec3f towardsCamera = directionFromElevationAzimuth(35.0f, 225.0f);
     return makeLookAtCamera(target + towardsCamera * distance, target, fovYDeg, aspect);
 }
