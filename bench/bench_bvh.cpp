@@ -3,6 +3,7 @@
 #include "accel/bvh_build.h"
 #include "bench_scene.h"
 #include "geometry/triangle_scene.h"
+#include "scene/camera_framing.h"
 
 #include <benchmark/benchmark.h>
 #include <tbb/blocked_range.h>
@@ -22,6 +23,17 @@
 namespace urbis::bench {
 namespace {
 
+/// World bounds of all triangles.
+Bounds3f sceneBounds(const std::vector<Triangle>& tris) {
+    Bounds3f b;
+    for (const Triangle& t : tris) {
+        b.extend(t.p0);
+        b.extend(t.p1);
+        b.extend(t.p2);
+    }
+    return b;
+}
+
 std::vector<Bounds3f> boundsOf(const std::vector<Triangle>& tris) {
     std::vector<Bounds3f> bounds(tris.size());
     tbb::parallel_for(size_t(0), tris.size(), [&](size_t i) {
@@ -33,20 +45,11 @@ std::vector<Bounds3f> boundsOf(const std::vector<Triangle>& tris) {
 }
 
 /// Primary rays of a pinhole camera above the city, looking across it and down.
-std::vector<Ray> primaryRays(int width, int height) {
-    const Vec3f eye{-900.0f, 160.0f, -700.0f}, at{0.0f, 0.0f, 0.0f};
-    const Vec3f forward = normalize(at - eye);
-    const Vec3f right = normalize(cross(forward, Vec3f{0.0f, 1.0f, 0.0f}));
-    const Vec3f up = cross(right, forward);
-    const float tanHalfFov = std::tan(0.5f * 60.0f * 3.14159265f / 180.0f), aspect = float(width) / float(height);
+std::vector<Ray> primaryRays(const Camera& camera, int width, int height) {
     std::vector<Ray> rays;
     rays.reserve(size_t(width) * height);
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const float sx = (2.0f * (x + 0.5f) / width - 1.0f) * tanHalfFov * aspect;
-            const float sy = (1.0f - 2.0f * (y + 0.5f) / height) * tanHalfFov;
-            rays.push_back({eye, normalize(forward + right * sx + up * sy)});
-        }
+        for (int x = 0; x < width; ++x) rays.push_back(camera.generateRay((x + 0.5f) / width, (y + 0.5f) / height));
     return rays;
 }
 
@@ -137,7 +140,8 @@ struct EmbreeScene {
 
 /// Everything the benchmarks share, made once.
 struct BenchData {
-    std::vector<Triangle> triangles = benchTriangles();
+    std::string description;
+    std::vector<Triangle> triangles = benchTriangles(description);
     std::vector<Bounds3f> bounds = boundsOf(triangles);
     Bvh bvh = buildBvh(bounds);
     std::vector<Triangle> sorted = [this] {
@@ -146,7 +150,7 @@ struct BenchData {
         return s;
     }();
     TriangleSceneView view{bvh.nodes.data(), sorted.data(), uint32_t(sorted.size())};
-    std::vector<Ray> primary = primaryRays(1024, 768);
+    std::vector<Ray> primary = primaryRays(frameCity(sceneBounds(triangles), 50.0f, 1024.0f / 768.0f), 1024, 768);
     std::vector<Ray> diffuse = diffuseRays(view, primary);
 #if URBIS_HAVE_EMBREE
     EmbreeScene embreeHigh{triangles, RTC_BUILD_QUALITY_HIGH};
@@ -269,7 +273,8 @@ public:
     }
     void Finalize() override {
         ConsoleReporter::Finalize();
-        std::printf("\nurbis / Embree 3 (build quality HIGH and MEDIUM), same triangles and rays, M/s:\n");
+        std::printf("\nscene: %s\n", data().description.c_str());
+        std::printf("urbis / Embree 3 (build quality HIGH and MEDIUM), same triangles and rays, M/s:\n");
         for (const auto& [name, rate] : rates_) {
             const size_t at = name.find("/urbis");
             const bool spread = name.ends_with("_stddev") || name.ends_with("_cv");

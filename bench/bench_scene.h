@@ -3,13 +3,15 @@
 
 #include "scene/triangle.h"
 
+#include <string>
 #include <vector>
 
 namespace urbis::bench {
 
-/// The benchmark scene in world space (metres, y up). For now a generated city of about a
-/// million triangles: closed boxes of varied heights on a grid of lots, some with a
-/// set-back upper part, on a ground plane. To be replaced by an imported city extract.
-std::vector<Triangle> benchTriangles();
+/// The benchmark scene in world space (metres, y up): the San Francisco extract
+/// (`URBIS_SHARED_DATA/sf_downtown_2023.osm.pbf`, or the file named by the environment variable
+/// URBIS_BENCH_OSM) meshed by citygen, plus a ground quad over the city; without the file, a
+/// generated city of 100,000 buildings. `description` says which.
+std::vector<Triangle> benchTriangles(std::string& description);
 
 } // namespace urbis::bench

@@ -1,1 +1,0 @@
-namespace urbis { int placeholderCore = 0; }
