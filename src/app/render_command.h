@@ -23,7 +23,7 @@ struct RenderOptions {
     float fovDeg = 50.0f;
     std::string sun = "40,150";       ///< "elevation,azimuth" degrees
     float sunRadiusDeg = 0.27f;
-    float exposureEv = 0.0f;
+    float exposureEv = -0.6f;
     float metresPerLevel = 3.0f;
 };
 

@@ -36,7 +36,7 @@ struct Chunk {
 CityMesh meshCity(const CityModel& city) {
     CityMesh out;
     MaterialTable table;
-    uint32_t groundMaterial = table.indexOf(Rgb{0.16f, 0.17f, 0.15f});
+    uint32_t groundMaterial = table.indexOf(Rgb{0.10f, 0.11f, 0.09f});
     std::vector<TriangleInfo> wallInfo(city.buildings.size()), roofInfo(city.buildings.size());
     for (size_t i = 0; i < city.buildings.size(); ++i) {
         const Building& b = city.buildings[i];

@@ -14,7 +14,7 @@ Camera frameCity(const Bounds3f& cityBounds, float fovYDeg, float aspect) {
     float halfFov = 0.5f * fminf(fovYDeg, fovYDeg * aspect) * kPi / 180.0f;
     // A city is flat: the sphere bound over-estimates what the view must hold, hence 0.62.
     float distance = 0.62f * radius / std::tan(halfFov);
-    Vec3f towardsCamera = directionFromElevationAzimuth(35.0f, 225.0f);
+    Vec3f towardsCamera = directionFromElevationAzimuth(22.0f, 225.0f);
     return makeLookAtCamera(target + towardsCamera * distance, target, fovYDeg, aspect);
 }
 

@@ -6,7 +6,7 @@
 
 namespace urbis {
 
-/// An elevated three-quarter view (from the south-west, 35 degrees down) that fits `cityBounds`
+/// An elevated three-quarter view (from the south-west, 22 degrees down) that fits `cityBounds`
 /// (world space) in the frame.
 Camera frameCity(const Bounds3f& cityBounds, float fovYDeg, float aspect);
 
