@@ -13,7 +13,10 @@ double RoofProfile::at(double x) const {
     if (x >= s.back()) return h.back();
     const size_t i = size_t(std::upper_bound(s.begin(), s.end(), x) - s.begin()) - 1;
     const double t = (x - s[i]) / (s[i + 1] - s[i]);
-    return h[i] + t * (h[i + 1] - h[i]);
+    const double height = h[i] + t * (h[i + 1] - h[i]);
+    // Within a tenth of a millimetre of the wall top is on it: in single precision the point
+    // could land on the wall top's own vertex and fold a gable triangle onto an edge.
+    return std::abs(height) < 1e-4 ? 0.0 : height;
 }
 
 Vec3f RoofSink::at(Vec2d p, double h) const { return worldFromCity(p, base + h); }

@@ -22,7 +22,7 @@ struct LevelPoint {
 };
 
 /// Height above the wall top as a piecewise-linear function of s: breakpoints `s` (increasing, m)
-/// and heights `h` (m); constant beyond the ends.
+/// and heights `h` (m); constant beyond the ends; heights under 0.1 mm are 0.
 struct RoofProfile {
     std::vector<double> s, h;
     /// Height at `x`, m.
