@@ -6,6 +6,7 @@ packages=(
   g++ cmake make pkg-config
   libosmium2-dev libprotozero-dev libexpat1-dev libbz2-dev zlib1g-dev   # OSM import
   libgeos-dev                                                           # footprint triangulation, validity
+  libcgal-dev                                                           # straight skeletons (hipped roofs)
   libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev                 # command line, JSON, PNG, threads
   libgtest-dev libbenchmark-dev libembree-dev                           # tests, benchmarks, speed reference
   python-osmnx-doc                                                      # a tiny real OSM extract for the tests

@@ -203,3 +203,26 @@ TEST(StreetTags, LampsAndTrees) {
     EXPECT_EQ(areaKindFromTags(tagsOf(river)), AreaKind::Water);
     EXPECT_FALSE(areaKindFromTags(tagsOf(shop)).has_value());
 }
+
+TEST(BuildingTags, RoofTagsReachTheBuilding) {
+    ImportOptions options;
+    std::map<std::string, uint64_t> issues;
+    const std::map<std::string, std::string> tagged{{"building", "house"}, {"height", "12"}, {"roof:shape", "hipped"},
+                                                    {"roof:angle", "35°"}, {"roof:direction", "SW"},
+                                                    {"roof:orientation", "across"}};
+    const Building a = buildingFromTags(tagsOf(tagged), options, 1, issues);
+    EXPECT_EQ(a.roofShape, RoofShape::Hipped);
+    EXPECT_FLOAT_EQ(a.roofAngle, 35.0f);
+    EXPECT_FLOAT_EQ(a.roofDirection, 225.0f);
+    EXPECT_TRUE(a.roofAcross);
+    EXPECT_FLOAT_EQ(a.roofHeight, 0.0f);  // untagged: the roof mesher derives it from the angle
+    EXPECT_TRUE(issues.empty());
+
+    const std::map<std::string, std::string> height{{"building", "yes"}, {"height", "12"}, {"roof:shape", "gabled"},
+                                                    {"roof:height", "4.5 m"}, {"roof:angle", "95"}};
+    const Building b = buildingFromTags(tagsOf(height), options, 2, issues);
+    EXPECT_FLOAT_EQ(b.roofHeight, 4.5f);
+    EXPECT_FLOAT_EQ(b.roofAngle, -1.0f);
+    EXPECT_EQ(issues["bad_roof_angle_tag"], 1u);
+    EXPECT_FLOAT_EQ(parseAngle("40 deg").value_or(0), 40.0f);
+}

@@ -1,5 +1,7 @@
 #include "citygen/building_mesher.h"
 
+#include "citygen/roof_mesher.h"
+
 #include <memory>
 
 namespace urbis {
@@ -67,15 +69,15 @@ bool meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleIn
                   TriangleMesh& mesh, BuildingTriangleCounts& counts) {
     std::vector<std::array<Vec2d, 3>> footprint;
     if (!triangulateFootprint(geos, building.footprint, footprint)) return false;
-    double bottom = building.minHeight, top = building.height;
-    for (const auto& t : footprint) {
-        // Triangles are two-sided for both backends, so GEOS's winding needs no fixing.
-        mesh.add({worldFromCity(t[0], top), worldFromCity(t[1], top), worldFromCity(t[2], top)}, roofInfo);
-        ++counts.roofs;
-        if (bottom > 0.0) {
+    const RoofResult roof = meshRoof(building, footprint, roofInfo, wallInfo, mesh);
+    counts.roofs += roof.roofTriangles;
+    counts.walls += roof.wallTriangles;
+    for (const char* reason : roof.fallbacks) ++counts.roofFallbacks[reason];
+    double bottom = building.minHeight, top = roof.wallTop;
+    if (bottom > 0.0) {
+        for (const auto& t : footprint)
             mesh.add({worldFromCity(t[0], bottom), worldFromCity(t[1], bottom), worldFromCity(t[2], bottom)}, wallInfo);
-            ++counts.walls;
-        }
+        counts.walls += footprint.size();
     }
     addWalls(building.footprint.outer, bottom, top, wallInfo, mesh, counts.walls);
     for (const Ring& hole : building.footprint.holes) addWalls(hole, bottom, top, wallInfo, mesh, counts.walls);

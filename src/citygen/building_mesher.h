@@ -1,5 +1,5 @@
-// One building's stored triangles: walls from every ring edge and a flat roof (with a floor
-// where the building floats above the ground), triangulated by GEOS's constrained Delaunay
+// One building's stored triangles: walls from every ring edge up to the roof, the roof
+// (citygen/roof_mesher.h) and a floor where the building floats above the ground, triangulated by GEOS's constrained Delaunay
 // triangulation, so holes and concave footprints need no hand-written ear clipping.
 #pragma once
 
@@ -7,6 +7,9 @@
 #include "model/city_model.h"
 
 #include <geos_c.h>
+
+#include <map>
+#include <string>
 
 namespace urbis {
 
@@ -16,6 +19,7 @@ inline Vec3f worldFromCity(Vec2d p, double h) { return {float(p.x), float(h), fl
 /// Triangle counts of one building by part.
 struct BuildingTriangleCounts {
     size_t walls = 0, roofs = 0;
+    std::map<std::string, uint64_t> roofFallbacks;  ///< roofs meshed as a simpler shape, by reason
 };
 
 /// Appends the walls and caps of `building` to `mesh`. Returns false (appending nothing) when GEOS

@@ -63,6 +63,7 @@ CityMesh meshCity(const CityModel& city) {
         walls += chunk.counts.walls;
         roofs += chunk.counts.roofs;
         failed += chunk.failed;
+        for (const auto& [reason, n] : chunk.counts.roofFallbacks) out.roofFallbacks[reason] += n;
     }
     for (const Triangle& t : out.mesh.triangles) {
         out.cityBounds.extend(t.p0);

@@ -18,6 +18,7 @@ struct CityMesh {
     Bounds3f cityBounds;                       ///< world bounds of the buildings (ground excluded)
     std::map<std::string, size_t> trianglesByKind;
     std::map<std::string, uint64_t> dropped;   ///< buildings that could not be meshed, by reason
+    std::map<std::string, uint64_t> roofFallbacks;  ///< roofs meshed as a simpler shape (unknown shape -> flat, ...), by reason
 };
 
 /// Meshes the whole city (object id of building i is i + 1; 0 is the ground) in parallel; the result does not depend on the thread count.

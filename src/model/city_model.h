@@ -55,7 +55,8 @@ struct Building {
     Polygon footprint;
     float minHeight = 0.0f;       ///< m above ground where the walls start
     float height = 10.0f;         ///< m above ground of the highest point, roof included
-    float roofHeight = 0.0f;      ///< m of `height` taken by the roof
+    float roofHeight = 0.0f;      ///< m of `height` taken by the roof; 0 on a sloped roof: untagged, the mesher picks it
+    float roofAngle = -1.0f;      ///< roof:angle, degrees from horizontal; -1 if untagged
     int levels = -1;              ///< building:levels above ground, -1 if unknown
     int minLevel = 0;
     int roofLevels = 0;

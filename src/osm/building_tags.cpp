@@ -58,15 +58,18 @@ Building buildingFromTags(const TagLookup& tag, const ImportOptions& options, in
     b.minLevel = minLevel ? int(std::lround(*minLevel)) : 0;
     b.minHeight = float(minHeight ? *minHeight : b.minLevel * perLevel);
 
-    float roof = b.roofShape == RoofShape::Flat ? 0.0f : perLevel;
+    // Untagged, a sloped roof is guessed one storey tall for the building's height, and its own
+    // height is left 0 for the roof mesher to derive from roof:angle or the footprint.
+    float roof = 0.0f;
     if (roofHeight) roof = float(*roofHeight);
     else if (roofLevels) roof = float(*roofLevels) * perLevel;
+    const float roofGuess = roof > 0.0f || b.roofShape == RoofShape::Flat ? roof : perLevel;
 
     if (height > 0.0) {
         b.height = float(height);
         b.heightSource = HeightSource::HeightTag;
     } else if (levels) {
-        b.height = float(*levels) * perLevel + roof;
+        b.height = float(*levels) * perLevel + roofGuess;
         b.heightSource = HeightSource::Levels;
     } else {
         const float u = float(objectSeed(options.seed ^ 0x5bd1e995u, osmId)) * 0x1p-32f;
@@ -80,6 +83,7 @@ Building buildingFromTags(const TagLookup& tag, const ImportOptions& options, in
     }
     b.roofHeight = std::clamp(roof, 0.0f, b.height - b.minHeight);
 
+    if (const auto angle = readTag(tag, "roof:angle", parseAngle, "bad_roof_angle_tag", issues)) b.roofAngle = *angle;
     if (const char* direction = tag("roof:direction")) {
         const std::optional<float> degrees = parseDirection(direction);
         if (degrees) b.roofDirection = *degrees;

@@ -83,6 +83,13 @@ std::optional<double> parseLevels(std::string_view value) {
     return number;
 }
 
+std::optional<float> parseAngle(std::string_view value) {
+    std::string_view s = trim(value);
+    const std::optional<double> degrees = takeNumber(s);
+    if (!degrees || !oneOf(trim(s), {"", "°", "deg"}) || !(*degrees > 0.0 && *degrees < 90.0)) return std::nullopt;
+    return float(*degrees);
+}
+
 std::optional<int> parseInteger(std::string_view value) {
     const std::string_view s = trim(value);
     int v = 0;

@@ -16,6 +16,9 @@ std::optional<double> parseLength(std::string_view value);
 /// A storey count ("3", "2.5"), in [0, 300]; anything else gives nullopt.
 std::optional<double> parseLevels(std::string_view value);
 
+/// A roof:angle in degrees from horizontal: "35", "35°", "35 deg"; nothing outside (0, 90).
+std::optional<float> parseAngle(std::string_view value);
+
 /// A whole number ("-1", "4"); anything else gives nullopt.
 std::optional<int> parseInteger(std::string_view value);
 

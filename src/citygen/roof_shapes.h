@@ -1,0 +1,48 @@
+// The roof shapes of Simple 3D Buildings as stored triangles over a footprint, each sitting on the
+// wall top `sink.base` and closing the building with the walls: every footprint edge at the wall
+// top is shared by exactly one roof or gable triangle.
+#pragma once
+
+#include "citygen/roof_surface.h"
+#include "citygen/straight_skeleton.h"
+#include "model/city_model.h"
+
+#include <array>
+#include <vector>
+
+namespace urbis {
+
+/// Triangles of a footprint in the city plane (GEOS's constrained Delaunay triangulation).
+using FootprintTriangles = std::vector<std::array<Vec2d, 3>>;
+
+/// A flat roof: the footprint triangles at the wall top.
+void meshFlatRoof(const FootprintTriangles& footprint, RoofSink& sink);
+
+/// A flat roof behind a parapet: the parapet's top (`thickness` m wide, the straight skeleton's
+/// offset band) at the wall top, its inner face, and the deck `parapetHeight` m lower.
+/// Returns false (emitting nothing) when a triangle of a skeleton face cannot be found.
+bool meshParapetRoof(const StraightSkeleton& skeleton, double parapetHeight, double thickness, RoofSink& sink);
+
+/// A roof whose height is `profile` of s = dot(p, across) (skillion, gabled, gambrel, round), over
+/// the footprint triangles, with vertical walls (gables) wherever it stands above a footprint edge.
+/// s within 0.1 µm of a breakpoint is snapped to it so that eaves meet the walls exactly.
+void meshRidgeRoof(const Polygon& polygon, const FootprintTriangles& footprint, Vec2d across,
+                   const RoofProfile& profile, RoofSink& sink);
+
+/// A roof whose height is `profile` of the straight-skeleton time (hipped, pyramidal, mansard).
+/// Returns false (emitting nothing) when a skeleton face cannot be triangulated.
+bool meshSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile& profile, RoofSink& sink);
+
+/// A pyramid over a convex ring: one triangle per edge up to the area centroid, `height` m above the wall top.
+void meshPyramidRoof(const Ring& outer, double height, RoofSink& sink);
+
+/// One point of a surface of revolution: the ring scaled by `scale` about the centroid, `height` m up.
+struct RevolutionStep {
+    double scale, height;
+};
+
+/// A dome or onion over a convex ring: copies of the ring scaled about its area centroid at each
+/// step (the first must be {1, 0}, the last {0, top}), joined by quads, closed at the apex.
+void meshRevolvedRoof(const Ring& outer, const std::vector<RevolutionStep>& steps, RoofSink& sink);
+
+} // namespace urbis
