@@ -76,7 +76,7 @@ void expectSameHitsOnGpuAndCpu(const std::string& osmFile, uint32_t count) {
     EXPECT_EQ(primDiffers, 0u);
     EXPECT_EQ(distanceDiffers, 0u);
     EXPECT_EQ(occlusionDiffers, 0u);
-    EXPECT_GT(hits, count / 5);
+    EXPECT_GT(hits, count / 10);
 }
 
 } // namespace
