@@ -5,7 +5,7 @@
 # ./gpu-out): gpu.log, bench_*.json, sf_gpu.png. Dependencies: $URBIS_DEPS (default ./.deps) with
 # root/usr (headers and libraries, dpkg -x) and data/ (sf_downtown_2023.osm.pbf, the Bavarian village).
 # Usage: bench/gpu.sh [steps], steps a comma list of build,test,bench,cpu (default all).
-# Environment: URBIS_BUILD_DIR (build), URBIS_CUDA_FMAD (ON), URBIS_TAG (suffix of the JSON names), JOBS.
+# Environment: URBIS_BUILD_DIR (build), URBIS_CUDA_FMAD (OFF), URBIS_TAG (suffix of the JSON names), JOBS.
 set -uo pipefail
 STEPS=",${1:-build,test,bench,cpu},"
 OUT=${OUT:-$PWD/gpu-out}
@@ -17,7 +17,7 @@ export LD_LIBRARY_PATH=$DEPS/root/usr/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}
 export URBIS_OSMNX_DATA=$DEPS/data URBIS_SHARED_DATA=$DEPS/data
 SF=$DEPS/data/sf_downtown_2023.osm.pbf
 BUILD=${URBIS_BUILD_DIR:-build}
-FMAD=${URBIS_CUDA_FMAD:-ON}
+FMAD=${URBIS_CUDA_FMAD:-OFF}
 TAG=${URBIS_TAG:-}
 # A dpkg -x'd dependency folder may hold only libexpatw (UTF-16, which libosmium cannot read) beside a
 # dangling libexpat.so: then take the system's libexpat.
