@@ -1,4 +1,5 @@
-// The urbis command: render, inspect.
+// The urbis command: render, inspect, bench.
+#include "app/bench_command.h"
 #include "app/inspect_command.h"
 #include "app/render_command.h"
 #include "model/input_error.h"
@@ -13,16 +14,21 @@ int main(int argc, char** argv) {
                  "  urbis render --buildings 20000 --spp 64 --out big.png\n"
                  "  urbis render --osm city.osm.pbf --stats stats.json\n"
                  "  urbis render --osm city.osm.pbf --camera-geo -122.397,37.789,300,20,-25\n"
+                 "  urbis render --device cuda --spp 256 --out gpu.png\n"
+                 "  urbis bench --device cuda --buildings 100000 --json bench.json\n"
                  "  urbis inspect city.osm.pbf --json\n"};
     app.require_subcommand(1);
     urbis::RenderOptions render;
     urbis::InspectOptions inspect;
+    urbis::BenchOptions bench;
     urbis::addRenderCommand(app, render);
     urbis::addInspectCommand(app, inspect);
+    urbis::addBenchCommand(app, bench);
     try {
         app.parse(argc, argv);
         if (app.got_subcommand("render")) urbis::runRender(render);
         if (app.got_subcommand("inspect")) urbis::runInspect(inspect);
+        if (app.got_subcommand("bench")) urbis::runBench(bench);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {

@@ -1,6 +1,7 @@
 #include "app/render_command.h"
 
 #include "app/option_parsing.h"
+#include "app/render_device.h"
 #include "citygen/city_mesher.h"
 #include "cpu/cpu_renderer.h"
 #include "io/atomic_file.h"
@@ -45,6 +46,8 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     cmd->add_option("--rr-depth", o.settings.rrDepth, "Depth where Russian roulette starts")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd->add_option("--rr-survival", o.settings.rrSurvival, "Largest survival probability of Russian roulette")->check(CLI::Range(0.01, 1.0))->capture_default_str();
     cmd->add_option("--stats", o.statsFile, "Write counts, memory, timings and rays/s as JSON");
+    cmd->add_option("--device", o.device, "auto (the GPU if usable, else the CPU), cpu or cuda")
+        ->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
 }
 
 namespace {
@@ -120,32 +123,46 @@ nlohmann::json countsJson(const CityModel& city) {
 
 } // namespace
 
+PreparedScene prepareScene(const RenderOptions& o) {
+    PreparedScene p;
+    Sun sun = daySun(o);
+    auto t0 = Clock::now();
+    p.city = loadCity(o);
+    p.secondsImport = secondsSince(t0);
+
+    t0 = Clock::now();
+    p.mesh = meshCity(p.city);
+    p.secondsCitygen = secondsSince(t0);
+
+    t0 = Clock::now();
+    p.scene = Scene::build(p.mesh.mesh, p.mesh.materials);
+    p.scene.ground = GroundPlane{0.0f, p.mesh.groundMaterial, true};
+    p.scene.sun = sun;
+    p.secondsBvh = secondsSince(t0);
+
+    p.camera = chooseCamera(o, p.city, p.mesh.cityBounds);
+    return p;
+}
+
 void runRender(const RenderOptions& o) {
     size_t threads = o.threads ? o.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
-    Sun sun = daySun(o);
+    daySun(o);   // fail on a bad --sun before any work
     checkOutputFolder(o.outFile);
     checkOutputFolder(o.statsFile);
 
-    auto t0 = Clock::now();
-    CityModel city = loadCity(o);
-    double secondsImport = secondsSince(t0);
+    PreparedScene prepared = prepareScene(o);
+    const CityModel& city = prepared.city;
+    const CityMesh& cityMesh = prepared.mesh;
+    const Scene& scene = prepared.scene;
+    double secondsImport = prepared.secondsImport, secondsCitygen = prepared.secondsCitygen,
+           secondsBvh = prepared.secondsBvh;
 
-    t0 = Clock::now();
-    CityMesh cityMesh = meshCity(city);
-    double secondsCitygen = secondsSince(t0);
-
-    t0 = Clock::now();
-    Scene scene = Scene::build(cityMesh.mesh, cityMesh.materials);
-    scene.ground = GroundPlane{0.0f, cityMesh.groundMaterial, true};
-    scene.sun = sun;
-    double secondsBvh = secondsSince(t0);
-
-    Camera camera = chooseCamera(o, city, cityMesh.cityBounds);
     RenderCounters counters;
-    LinearImage image = renderCpu(scene.view(), camera, o.settings, isatty(2), counters);
+    DeviceReport device;
+    LinearImage image = renderOnDevice(scene, prepared.camera, o.settings, o.device, isatty(2), counters, device);
 
-    t0 = Clock::now();
+    auto t0 = Clock::now();
     writePng(toneMap(image, o.exposureEv), o.outFile);
     double secondsWrite = secondsSince(t0);
 
@@ -165,7 +182,11 @@ void runRender(const RenderOptions& o) {
         {"bytes_by_kind", {{"triangles", memory.triangles}, {"triangle_info", memory.triangleInfo},
                            {"materials", memory.materials}, {"bvh", memory.bvh}}},
         {"width", o.settings.width}, {"height", o.settings.height}, {"spp", o.settings.spp},
-        {"seed", o.settings.seed}, {"threads", threads}, {"device", "cpu"},
+        {"seed", o.settings.seed}, {"threads", threads}, {"device", device.device},
+        {"device_name", device.name},
+        {"bytes_device", {{"bvh", device.memory.nodes}, {"triangles", device.memory.triangles},
+                          {"triangle_info", device.memory.triangleInfo}, {"materials", device.memory.materials},
+                          {"film", device.memory.film}, {"total", device.memory.total()}}},
         {"seconds", {{"import", secondsImport}, {"citygen", secondsCitygen}, {"bvh", secondsBvh},
                      {"render", counters.seconds}, {"write", secondsWrite}}},
         {"seconds_render", counters.seconds},

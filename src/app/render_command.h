@@ -1,7 +1,11 @@
 // `urbis render`: load or generate a city, mesh it, build the BVH, path trace, write PNG and stats.
 #pragma once
 
+#include "citygen/city_mesher.h"
+#include "model/city_model.h"
+#include "scene/camera.h"
 #include "scene/render_settings.h"
+#include "scene/scene.h"
 
 #include <CLI/CLI.hpp>
 
@@ -25,7 +29,21 @@ struct RenderOptions {
     float sunRadiusDeg = 0.27f;
     float exposureEv = -0.6f;
     float metresPerLevel = 3.0f;
+    std::string device = "auto";      ///< "auto", "cpu" or "cuda"
 };
+
+/// A city loaded (or generated), meshed and turned into a scene with its BVH, ground and sun,
+/// and the camera the options ask for; with the time of each step in seconds.
+struct PreparedScene {
+    CityModel city;
+    CityMesh mesh;
+    Scene scene;
+    Camera camera;
+    double secondsImport = 0, secondsCitygen = 0, secondsBvh = 0;
+};
+
+/// Everything before the render itself, shared by `urbis render` and `urbis bench`; throws InputError on bad input.
+PreparedScene prepareScene(const RenderOptions& options);
 
 /// Registers the subcommand's options on `app`.
 void addRenderCommand(CLI::App& app, RenderOptions& options);

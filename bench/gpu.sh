@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# GPU check and benchmark in one go: builds urbis with CUDA, runs the GPU tests (CTest label gpu),
+# benchmarks the GPU (and the CPU, for comparison) on downtown San Francisco and on a generated
+# 100k-building city, and renders one image per backend. Logs and JSON go to $OUT (default
+# ./gpu-out): gpu.log, bench_*.json, sf_gpu.png. Dependencies: $URBIS_DEPS (default ./.deps) with
+# root/usr (headers and libraries, dpkg -x) and data/ (sf_downtown_2023.osm.pbf, the Bavarian village).
+# Usage: bench/gpu.sh [steps], steps a comma list of build,test,bench,cpu (default all).
+# Environment: URBIS_BUILD_DIR (build), URBIS_CUDA_FMAD (OFF), URBIS_TAG (suffix of the JSON names), JOBS.
+set -uo pipefail
+STEPS=",${1:-build,test,bench,cpu},"
+OUT=${OUT:-$PWD/gpu-out}
+DEPS=${URBIS_DEPS:-$PWD/.deps}
+JOBS=${JOBS:-$(nproc)}
+mkdir -p "$OUT"
+LOG=$OUT/gpu.log
+export LD_LIBRARY_PATH=$DEPS/root/usr/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}
+export URBIS_OSMNX_DATA=$DEPS/data URBIS_SHARED_DATA=$DEPS/data
+SF=$DEPS/data/sf_downtown_2023.osm.pbf
+BUILD=${URBIS_BUILD_DIR:-build}
+FMAD=${URBIS_CUDA_FMAD:-OFF}
+TAG=${URBIS_TAG:-}
+# A dpkg -x'd dependency folder may hold only libexpatw (UTF-16, which libosmium cannot read) beside a
+# dangling libexpat.so: then take the system's libexpat.
+EXPAT_ARGS=()
+if [[ ! -e $DEPS/root/usr/lib/x86_64-linux-gnu/libexpat.so ]]; then
+  for f in /usr/lib/x86_64-linux-gnu/libexpat.so /usr/lib/x86_64-linux-gnu/libexpat.so.1; do
+    [[ -e $f ]] && { EXPAT_ARGS=(-DEXPAT_LIBRARY="$f"); break; }
+  done
+fi
+say() { echo "== $* ($(date +%T))" | tee -a "$LOG"; }
+run() { "$@" 2>&1 | tee -a "$LOG"; return "${PIPESTATUS[0]}"; }
+status=0
+
+if [[ $STEPS == *,build,* ]]; then
+  say build
+  run nvidia-smi --query-gpu=name,memory.total,clocks.sm,clocks.max.sm --format=csv
+  run cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$DEPS/root/usr" -DURBIS_BUILD_BENCH=OFF \
+      -DURBIS_CUDA_RESOURCE_USAGE=ON -DURBIS_CUDA_FMAD="$FMAD" "${EXPAT_ARGS[@]}" || exit 1
+  run cmake --build "$BUILD" -j"$JOBS" || exit 1
+  grep -E "ptxas info|stack frame" "$LOG" | tail -8
+fi
+
+if [[ $STEPS == *,test,* ]]; then
+  say "GPU tests"
+  run ctest --test-dir "$BUILD" -L gpu --output-on-failure --timeout 300 || status=1
+  run "$BUILD"/urbis_gpu_tests --gtest_filter='GpuRender.*:GpuTraversal.*' 2>&1 | grep -E "parity|bit-identical|OK|FAILED" || true
+fi
+
+if [[ $STEPS == *,bench,* ]]; then
+  say "GPU bench: San Francisco"
+  run "$BUILD"/urbis bench --device cuda --osm "$SF" --json "$OUT/bench_sf${TAG}_cuda.json" || status=1
+  say "GPU bench: San Francisco from street level"
+  run "$BUILD"/urbis bench --device cuda --osm "$SF" --camera-geo -122.397,37.789,300,20,-25 \
+      --json "$OUT/bench_sfstreet${TAG}_cuda.json" || status=1
+  say "GPU bench: generated city, 100k buildings"
+  run "$BUILD"/urbis bench --device cuda --buildings 100000 --json "$OUT/bench_100k${TAG}_cuda.json" || status=1
+  say "GPU render: San Francisco, 1920x1080, 64 spp"
+  if [[ -z $TAG ]]; then
+    run "$BUILD"/urbis render --device cuda --osm "$SF" --width 1920 --height 1080 --spp 64 --out "$OUT/sf_gpu.png" \
+        --stats "$OUT/render_sf_cuda.json" || status=1
+  fi
+fi
+
+if [[ $STEPS == *,cpu,* ]]; then
+  say "CPU bench: San Francisco"
+  run "$BUILD"/urbis bench --device cpu --osm "$SF" --repeats 3 --json "$OUT/bench_sf_cpu.json" || status=1
+  say "CPU bench: generated city, 100k buildings"
+  run "$BUILD"/urbis bench --device cpu --buildings 100000 --repeats 3 --json "$OUT/bench_100k_cpu.json" || status=1
+fi
+
+say "done, status $status"
+exit $status

@@ -1,0 +1,215 @@
+#include "app/bench_command.h"
+
+#include "app/render_device.h"
+#include "gpu/gpu_backend.h"
+#include "integrators/path_tracer.h"
+#include "io/atomic_file.h"
+#include "model/input_error.h"
+
+#include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+namespace urbis {
+
+void addBenchCommand(CLI::App& app, BenchOptions& o) {
+    CLI::App* cmd = app.add_subcommand("bench", "Rays/s of primary, diffuse and shadow rays and the time of a 1 spp "
+                                                "frame, on the GPU or the CPU (kernel time, median of --repeats)");
+    RenderOptions& r = o.scene;
+    r.settings.width = 1920;
+    r.settings.height = 1080;
+    r.settings.spp = 1;
+    r.buildings = 100000;
+    r.device = "cuda";
+    cmd->add_option("--device", r.device, "cuda, cpu, or auto")->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
+    cmd->add_option("--osm", r.osmFile, "OpenStreetMap file (default: the generated city)");
+    cmd->add_option("--buildings", r.buildings, "Buildings in the generated city")->check(CLI::Range(uint64_t(1), uint64_t(5000000)))->capture_default_str();
+    cmd->add_option("--bbox", r.bbox, "Crop OSM to MINLON,MINLAT,MAXLON,MAXLAT");
+    cmd->add_option("--width", r.settings.width, "Width of the ray batches and the frame")->check(CLI::Range(1, 16384))->capture_default_str();
+    cmd->add_option("--height", r.settings.height, "Height of the ray batches and the frame")->check(CLI::Range(1, 16384))->capture_default_str();
+    cmd->add_option("--spp", r.settings.spp, "Samples per pixel of the timed frame")->check(CLI::Range(1, 1 << 16))->capture_default_str();
+    cmd->add_option("--seed", r.settings.seed, "Seed of the city and of the sampler")->capture_default_str();
+    cmd->add_option("--sun", r.sun, "ELEVATION,AZIMUTH of the sun in degrees")->capture_default_str();
+    cmd->add_option("--camera", r.camera, "X,Y,Z,TX,TY,TZ: position and target in world metres");
+    cmd->add_option("--camera-geo", r.cameraGeo, "LON,LAT,ALTITUDE,HEADING,PITCH (OSM only)");
+    cmd->add_option("--threads", r.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+    cmd->add_option("--repeats", o.repeats, "Timed runs per measurement (0: 20 on the GPU, 3 on the CPU)")->check(CLI::Range(0, 10000))->capture_default_str();
+    cmd->add_option("--warmup", o.warmup, "Untimed runs first (GPU)")->check(CLI::Range(0, 1000))->capture_default_str();
+    cmd->add_option("--json", o.jsonFile, "Write the results as JSON");
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// The three ray batches: one primary ray per pixel (through its centre), and from each primary
+/// hit (buildings or ground) one cosine-distributed bounce ray and one ray towards the sun's disk
+/// (where the sun is above the surface), as the path tracer would trace them.
+struct RayBatches {
+    std::vector<Ray> primary, diffuse, shadow;
+    size_t primaryTriangleHits = 0;
+};
+
+RayBatches makeRays(const Scene& scene, const Camera& camera, const RenderSettings& settings) {
+    RayBatches b;
+    const uint32_t w = settings.width, h = settings.height;
+    const size_t n = size_t(w) * h;
+    b.primary.resize(n);
+    std::vector<Ray> diffuse(n), shadow(n);
+    std::vector<uint8_t> hasDiffuse(n, 0), hasShadow(n, 0), hitTriangle(n, 0);
+    const SceneView view = scene.view();
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t i = range.begin(); i < range.end(); ++i) {
+            const uint32_t x = uint32_t(i % w), y = uint32_t(i / w);
+            Ray ray = camera.generateRay((float(x) + 0.5f) / float(w), (float(y) + 0.5f) / float(h));
+            b.primary[i] = ray;
+            SurfaceHit hit = intersectScene(view, ray);
+            if (!hit.valid()) continue;
+            hitTriangle[i] = hit.kind == SurfaceKind::Triangle;
+            Vec3f origin = offsetRayOrigin(ray.origin + ray.dir * hit.t, hit.normal);
+            SampleStream rng{settings.seed, uint32_t(i), 0, 16};
+            float u1 = rng.draw(), u2 = rng.draw(), u3 = rng.draw(), u4 = rng.draw();
+            diffuse[i] = Ray{origin, Frame::fromZ(hit.normal).toWorld(sampleCosineHemisphere(u1, u2))};
+            hasDiffuse[i] = 1;
+            Vec3f toSun = scene.sun.sampleDirection(u3, u4);
+            if (scene.sun.enabled() && dot(toSun, hit.normal) > 0.0f) {
+                shadow[i] = Ray{origin, toSun};
+                hasShadow[i] = 1;
+            }
+        }
+    });
+    for (size_t i = 0; i < n; ++i) {
+        if (hasDiffuse[i]) b.diffuse.push_back(diffuse[i]);
+        if (hasShadow[i]) b.shadow.push_back(shadow[i]);
+        b.primaryTriangleHits += hitTriangle[i];
+    }
+    return b;
+}
+
+double median(std::vector<float> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    size_t m = v.size() / 2;
+    return v.size() % 2 ? v[m] : 0.5 * (double(v[m - 1]) + double(v[m]));
+}
+
+/// Wall-clock milliseconds of `repeats` runs of `work` on the CPU.
+template <typename Work>
+std::vector<float> timeCpu(int repeats, Work&& work) {
+    std::vector<float> ms;
+    for (int i = 0; i < repeats; ++i) {
+        auto t0 = Clock::now();
+        work();
+        ms.push_back(float(std::chrono::duration<double, std::milli>(Clock::now() - t0).count()));
+    }
+    return ms;
+}
+
+std::vector<float> timeCpuTrace(const Scene& scene, const std::vector<Ray>& rays, bool shadow, int repeats) {
+    const SceneView view = scene.view();
+    std::vector<Hit> hits(rays.size());
+    std::vector<uint8_t> blocked(rays.size());
+    return timeCpu(repeats, [&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t i = r.begin(); i < r.end(); ++i) {
+                if (shadow)
+                    blocked[i] = occluded(view.geometry, rays[i]);
+                else
+                    hits[i] = intersectClosest(view.geometry, rays[i]);
+            }
+        });
+    });
+}
+
+struct Row {
+    std::string name;
+    size_t rays;
+    std::vector<float> ms;
+};
+
+} // namespace
+
+void runBench(const BenchOptions& o) {
+    const RenderOptions& r = o.scene;
+    size_t threads = r.threads ? r.threads : size_t(tbb::info::default_concurrency());
+    tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
+    if (!o.jsonFile.empty()) {
+        std::FILE* probe = std::fopen((o.jsonFile + ".tmp").c_str(), "w");
+        if (!probe) throw InputError(o.jsonFile + ": cannot write here");
+        std::fclose(probe);
+        std::remove((o.jsonFile + ".tmp").c_str());
+    }
+
+    std::string device = r.device;
+    GpuInfo gpu;
+    if (device != "cpu") {
+        gpu = probeGpu();
+        if (!gpu.available && device == "cuda") throw InputError("--device cuda: " + gpu.reason);
+        device = gpu.available ? "cuda" : "cpu";
+    }
+    const bool onGpu = device == "cuda";
+    const int repeats = o.repeats > 0 ? o.repeats : (onGpu ? 20 : 3);
+
+    PreparedScene prepared = prepareScene(r);
+    const Scene& scene = prepared.scene;
+    RayBatches batches = makeRays(scene, prepared.camera, r.settings);
+    const std::string deviceName = onGpu ? gpu.name : cpuModelName();
+    std::fprintf(stderr, "urbis: benchmarking on %s (%s)\n", deviceName.c_str(), device.c_str());
+
+    std::vector<Row> rows = {{"primary", batches.primary.size(), {}},
+                             {"diffuse", batches.diffuse.size(), {}},
+                             {"shadow", batches.shadow.size(), {}}};
+    const std::vector<Ray>* batch[3] = {&batches.primary, &batches.diffuse, &batches.shadow};
+    std::vector<float> frameMs;
+    RenderSettings frame = r.settings;
+    GpuMemory memory;
+    if (onGpu) {
+        size_t extra = batches.primary.size() * (sizeof(Ray) + sizeof(Hit)) +
+                       size_t(frame.width) * frame.height * sizeof(Vec3f);
+        std::unique_ptr<GpuScene> g = GpuScene::upload(scene, extra);
+        for (int k = 0; k < 3; ++k) rows[k].ms = g->timeTrace(*batch[k], k == 2, o.warmup, repeats);
+        frameMs = g->timeRender(prepared.camera, frame, o.warmup, repeats);
+        memory = g->memory();
+    } else {
+        for (int k = 0; k < 3; ++k) rows[k].ms = timeCpuTrace(scene, *batch[k], k == 2, repeats);
+        RenderCounters counters;
+        frameMs = timeCpu(repeats, [&] { renderCpu(scene.view(), prepared.camera, frame, false, counters); });
+    }
+
+    std::printf("urbis bench: %s, %zu triangles, %zu BVH nodes; %s (%s)\n", prepared.city.source.c_str(),
+                scene.triangles.size(), scene.nodes.size(), deviceName.c_str(), device.c_str());
+    std::printf("%-28s %10s %11s %11s %14s\n", "measurement", "rays", "median ms", "min ms", "rays/s");
+    nlohmann::json json = {{"source", prepared.city.source}, {"buildings", prepared.city.buildings.size()},
+                           {"triangles", scene.triangles.size()}, {"bvh_nodes", scene.nodes.size()},
+                           {"device", device}, {"device_name", deviceName}, {"repeats", repeats},
+                           {"warmup", onGpu ? o.warmup : 0}, {"width", frame.width}, {"height", frame.height},
+                           {"primary_triangle_hit_fraction",
+                            double(batches.primaryTriangleHits) / double(std::max<size_t>(1, batches.primary.size()))}};
+    for (const Row& row : rows) {
+        double med = median(row.ms);
+        double best = row.ms.empty() ? 0.0 : *std::min_element(row.ms.begin(), row.ms.end());
+        double raysPerSecond = med > 0 ? double(row.rays) / (med * 1e-3) : 0.0;
+        std::printf("%-28s %10zu %11.3f %11.3f %14.4g\n", (row.name + " rays").c_str(), row.rays, med, best,
+                    raysPerSecond);
+        json["rays"][row.name] = {{"count", row.rays}, {"median_ms", med}, {"min_ms", best},
+                                  {"rays_per_second", raysPerSecond}, {"ms", row.ms}};
+    }
+    double frameMed = median(frameMs);
+    double frameBest = frameMs.empty() ? 0.0 : *std::min_element(frameMs.begin(), frameMs.end());
+    char label[64];
+    std::snprintf(label, sizeof label, "frame %ux%u %u spp", frame.width, frame.height, frame.spp);
+    std::printf("%-28s %10s %11.3f %11.3f %14s\n", label, "-", frameMed, frameBest, "-");
+    json["frame"] = {{"spp", frame.spp}, {"max_depth", frame.maxDepth}, {"median_ms", frameMed}, {"min_ms", frameBest},
+                     {"ms", frameMs}};
+    json["bytes_device"] = {{"bvh", memory.nodes}, {"triangles", memory.triangles},
+                            {"triangle_info", memory.triangleInfo}, {"materials", memory.materials},
+                            {"film", memory.film}, {"rays", memory.rays}, {"total", memory.total()}};
+    if (!o.jsonFile.empty()) writeTextFileAtomically(o.jsonFile, json.dump(2) + "\n");
+}
+
+} // namespace urbis

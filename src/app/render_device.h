@@ -1,0 +1,28 @@
+// Choosing the backend of a render (--device auto|cpu|cuda) and running it there.
+#pragma once
+
+#include "cpu/cpu_renderer.h"
+#include "gpu/gpu_backend.h"
+
+#include <string>
+
+namespace urbis {
+
+/// Where a frame was rendered and what it held there.
+struct DeviceReport {
+    std::string device = "cpu";   ///< "cpu" or "cuda"
+    std::string name;             ///< the GPU's or the CPU's model name
+    GpuMemory memory;             ///< device memory by kind (zero on the CPU)
+};
+
+/// The CPU's model name from /proc/cpuinfo, or "cpu" where unknown.
+std::string cpuModelName();
+
+/// Renders on `device`: "cuda" (fails with InputError if the GPU cannot), "cpu", or "auto" (the
+/// GPU when one is usable, else the CPU, saying which on stderr, with a stated fallback to the CPU
+/// if the GPU fails). `showProgress` draws the CPU progress bar.
+LinearImage renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                           const std::string& device, bool showProgress, RenderCounters& counters,
+                           DeviceReport& report);
+
+} // namespace urbis

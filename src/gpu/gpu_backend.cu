@@ -1,0 +1,261 @@
+// The CUDA backend: device memory and kernel launches only. Every kernel calls the shared
+// URBIS_HD per-ray code (tracePath, intersectClosest, occluded), the same as the CPU backend.
+#include "gpu/gpu_backend.h"
+
+#include "gpu/cuda_check.h"
+#include "gpu/device_buffer.h"
+#include "gpu/device_scene.h"
+#include "integrators/path_tracer.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace urbis {
+
+namespace {
+
+constexpr int kTileX = 8, kTileY = 16;   // 128 threads; each warp covers 8 x 4 pixels
+constexpr int kTraceBlock = 128;
+
+/// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU.
+__global__ void __launch_bounds__(kTileX * kTileY) renderKernel(SceneView scene, Camera camera, RenderSettings settings,
+                                                                Vec3f* film, unsigned long long* rayCount) {
+    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+    uint32_t rays = 0;
+    if (x < settings.width && y < settings.height) {
+        Vec3f sum{};
+        for (uint32_t s = 0; s < settings.spp; ++s) {
+            PathSample sample = tracePath(scene, camera, settings, x, y, s);
+            sum += sample.radiance;
+            rays += sample.rays;
+        }
+        film[size_t(y) * settings.width + x] = sum / float(settings.spp);
+    }
+    // One atomic per warp.
+    unsigned long long total = rays;
+    for (int offset = 16; offset > 0; offset /= 2) total += __shfl_down_sync(0xffffffffu, total, offset);
+    if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && total > 0) atomicAdd(rayCount, total);
+}
+
+__global__ void __launch_bounds__(kTraceBlock) closestKernel(TriangleSceneView geometry, const Ray* rays, Hit* hits,
+                                                            uint32_t count) {
+    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < count) hits[i] = intersectClosest(geometry, rays[i]);
+}
+
+__global__ void __launch_bounds__(kTraceBlock) occludedKernel(TriangleSceneView geometry, const Ray* rays,
+                                                             uint8_t* blocked, uint32_t count) {
+    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < count) blocked[i] = occluded(geometry, rays[i]) ? 1 : 0;
+}
+
+/// Launches check the launch itself at once and the kernel's run at the next synchronisation.
+void checkLaunch(const char* kernel) {
+    cudaError_t status = cudaGetLastError();
+    if (status != cudaSuccess)
+        throw InputError(std::string("CUDA error launching ") + kernel + ": " + cudaGetErrorString(status));
+}
+
+/// A pair of CUDA events around device work; elapsed time in milliseconds.
+class EventTimer {
+public:
+    EventTimer() {
+        URBIS_CUDA_CHECK(cudaEventCreate(&start_));
+        URBIS_CUDA_CHECK(cudaEventCreate(&stop_));
+    }
+    ~EventTimer() {
+        cudaEventDestroy(start_);
+        cudaEventDestroy(stop_);
+    }
+    EventTimer(const EventTimer&) = delete;
+    EventTimer& operator=(const EventTimer&) = delete;
+    void start() { URBIS_CUDA_CHECK(cudaEventRecord(start_)); }
+    float stopMs() {
+        URBIS_CUDA_CHECK(cudaEventRecord(stop_));
+        URBIS_CUDA_CHECK(cudaEventSynchronize(stop_));
+        float ms = 0;
+        URBIS_CUDA_CHECK(cudaEventElapsedTime(&ms, start_, stop_));
+        return ms;
+    }
+
+private:
+    cudaEvent_t start_ = nullptr, stop_ = nullptr;
+};
+
+std::string formatMiB(size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
+    return text;
+}
+
+uint32_t blocksFor(size_t count) { return uint32_t((count + kTraceBlock - 1) / kTraceBlock); }
+
+} // namespace
+
+GpuInfo probeGpu() {
+    GpuInfo info;
+    int count = 0;
+    cudaError_t status = cudaGetDeviceCount(&count);
+    if (status != cudaSuccess || count == 0) {
+        info.reason = std::string("no CUDA device: ") + (status != cudaSuccess ? cudaGetErrorString(status) : "none found");
+        cudaGetLastError();   // clear the error so that later calls start clean
+        return info;
+    }
+    cudaDeviceProp prop{};
+    status = cudaGetDeviceProperties(&prop, 0);
+    if (status == cudaSuccess) status = cudaSetDevice(0);
+    if (status == cudaSuccess) status = cudaMemGetInfo(&info.freeBytes, &info.totalBytes);
+    if (status != cudaSuccess) {
+        info.reason = std::string("no usable CUDA device: ") + cudaGetErrorString(status);
+        return info;
+    }
+    info.name = prop.name;
+    info.computeMajor = prop.major;
+    info.computeMinor = prop.minor;
+    info.multiprocessors = prop.multiProcessorCount;
+    // The fat binary holds code for URBIS_CUDA_ARCHITECTURES only: ask whether a kernel loads here.
+    cudaFuncAttributes attributes{};
+    status = cudaFuncGetAttributes(&attributes, renderKernel);
+    if (status != cudaSuccess) {
+        info.reason = "CUDA device " + info.name + " (sm_" + std::to_string(prop.major) + std::to_string(prop.minor) +
+                      ") cannot run this build's kernels (" + cudaGetErrorString(status) +
+                      "); rebuild with -DURBIS_CUDA_ARCHITECTURES=" + std::to_string(prop.major) +
+                      std::to_string(prop.minor);
+        cudaGetLastError();
+        return info;
+    }
+    info.available = true;
+    return info;
+}
+
+struct GpuScene::Impl {
+    GpuInfo info;
+    DeviceScene scene;
+    DeviceBuffer<Vec3f> film;
+    DeviceBuffer<Ray> rays;
+    DeviceBuffer<Hit> hits;
+    DeviceBuffer<uint8_t> blocked;
+    DeviceBuffer<unsigned long long> rayCount{1};
+
+    /// Launches the path tracer into `film`; returns after the launch (not the run).
+    void launchRender(const Camera& camera, const RenderSettings& settings) {
+        film.resize(size_t(settings.width) * settings.height);
+        dim3 block(kTileX, kTileY);
+        dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
+        renderKernel<<<grid, block>>>(scene.view(), camera, settings, film.data(), rayCount.data());
+        checkLaunch("renderKernel");
+    }
+
+    /// Launches closest-hit or any-hit tracing of the rays already in `rays`.
+    void launchTrace(bool shadow) {
+        const uint32_t n = uint32_t(rays.size());
+        if (n == 0) return;
+        if (shadow) {
+            blocked.resize(n);
+            occludedKernel<<<blocksFor(n), kTraceBlock>>>(scene.view().geometry, rays.data(), blocked.data(), n);
+            checkLaunch("occludedKernel");
+        } else {
+            hits.resize(n);
+            closestKernel<<<blocksFor(n), kTraceBlock>>>(scene.view().geometry, rays.data(), hits.data(), n);
+            checkLaunch("closestKernel");
+        }
+    }
+
+    /// Checks that `bytes` more fit in the free device memory.
+    void requireFree(size_t bytes, const char* what) const {
+        size_t freeBytes = 0, totalBytes = 0;
+        URBIS_CUDA_CHECK(cudaMemGetInfo(&freeBytes, &totalBytes));
+        if (bytes > freeBytes)
+            throw InputError(std::string(what) + " needs " + formatMiB(bytes) + " of GPU memory but " + info.name +
+                             " has " + formatMiB(freeBytes) + " free of " + formatMiB(totalBytes));
+    }
+};
+
+GpuScene::GpuScene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+GpuScene::~GpuScene() = default;
+
+std::unique_ptr<GpuScene> GpuScene::upload(const Scene& scene, size_t extraBytes) {
+    auto impl = std::make_unique<Impl>();
+    impl->info = probeGpu();
+    if (!impl->info.available) throw InputError(impl->info.reason);
+    impl->requireFree(DeviceScene::bytesFor(scene) + extraBytes, "the scene");
+    impl->scene.upload(scene);
+    return std::unique_ptr<GpuScene>(new GpuScene(std::move(impl)));
+}
+
+LinearImage GpuScene::render(const Camera& camera, const RenderSettings& settings, RenderCounters& counters) {
+    Impl& m = *impl_;
+    m.requireFree(size_t(settings.width) * settings.height * sizeof(Vec3f) > m.film.bytes()
+                      ? size_t(settings.width) * settings.height * sizeof(Vec3f) - m.film.bytes() : 0,
+                  "the film");
+    URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
+    m.film.resize(size_t(settings.width) * settings.height);
+    EventTimer timer;
+    timer.start();
+    m.launchRender(camera, settings);
+    counters.seconds = timer.stopMs() * 1e-3;
+    URBIS_CUDA_CHECK(cudaDeviceSynchronize());
+    counters.rays = m.rayCount.download()[0];
+    return LinearImage{settings.width, settings.height, m.film.download()};
+}
+
+std::vector<Hit> GpuScene::intersectClosest(const std::vector<Ray>& rays) {
+    impl_->rays.upload(rays);
+    impl_->launchTrace(false);
+    URBIS_CUDA_CHECK(cudaDeviceSynchronize());
+    return rays.empty() ? std::vector<Hit>{} : impl_->hits.download();
+}
+
+std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>& rays) {
+    impl_->rays.upload(rays);
+    impl_->launchTrace(true);
+    URBIS_CUDA_CHECK(cudaDeviceSynchronize());
+    return rays.empty() ? std::vector<uint8_t>{} : impl_->blocked.download();
+}
+
+std::vector<float> GpuScene::timeTrace(const std::vector<Ray>& rays, bool shadow, int warmup, int repeats) {
+    Impl& m = *impl_;
+    m.requireFree(rays.size() * (sizeof(Ray) + sizeof(Hit)), "the ray batch");
+    m.rays.upload(rays);
+    for (int i = 0; i < warmup; ++i) m.launchTrace(shadow);
+    URBIS_CUDA_CHECK(cudaDeviceSynchronize());
+    std::vector<float> ms;
+    EventTimer timer;
+    for (int i = 0; i < repeats; ++i) {
+        timer.start();
+        m.launchTrace(shadow);
+        ms.push_back(timer.stopMs());
+    }
+    return ms;
+}
+
+std::vector<float> GpuScene::timeRender(const Camera& camera, const RenderSettings& settings, int warmup, int repeats) {
+    Impl& m = *impl_;
+    for (int i = 0; i < warmup; ++i) m.launchRender(camera, settings);
+    URBIS_CUDA_CHECK(cudaDeviceSynchronize());
+    std::vector<float> ms;
+    EventTimer timer;
+    for (int i = 0; i < repeats; ++i) {
+        timer.start();
+        m.launchRender(camera, settings);
+        ms.push_back(timer.stopMs());
+    }
+    return ms;
+}
+
+GpuMemory GpuScene::memory() const {
+    const Impl& m = *impl_;
+    GpuMemory out;
+    out.nodes = m.scene.nodes.bytes();
+    out.triangles = m.scene.triangles.bytes();
+    out.triangleInfo = m.scene.triangleInfo.bytes();
+    out.materials = m.scene.materials.bytes();
+    out.film = m.film.bytes();
+    out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes();
+    return out;
+}
+
+const GpuInfo& GpuScene::info() const { return impl_->info; }
+
+} // namespace urbis

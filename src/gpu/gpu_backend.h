@@ -1,0 +1,78 @@
+// The GPU backend's host interface, the same whether or not urbis was built with CUDA: the
+// build picks gpu_backend.cu (CUDA) or gpu_backend_none.cpp (reports "built without CUDA").
+// Per-ray code is not here: the kernels call the same URBIS_HD headers as the CPU backend.
+#pragma once
+
+#include "cpu/cpu_renderer.h"
+#include "film/image.h"
+#include "math/ray.h"
+#include "scene/camera.h"
+#include "scene/render_settings.h"
+#include "scene/scene.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace urbis {
+
+/// Whether a usable GPU is there, and which.
+struct GpuInfo {
+    bool available = false;
+    std::string name;          ///< e.g. "NVIDIA H100 80GB HBM3"; empty if unavailable
+    std::string reason;        ///< why not, if unavailable ("urbis was built without CUDA", "no CUDA device: ...")
+    size_t totalBytes = 0, freeBytes = 0;
+    int computeMajor = 0, computeMinor = 0, multiprocessors = 0;
+};
+
+/// Probes device 0. Never throws; a missing driver or device is reported in `reason`.
+GpuInfo probeGpu();
+
+/// Device memory held by a GpuScene, by kind (bytes).
+struct GpuMemory {
+    size_t nodes = 0, triangles = 0, triangleInfo = 0, materials = 0, film = 0, rays = 0;
+    size_t total() const { return nodes + triangles + triangleInfo + materials + film + rays; }
+};
+
+/// A Scene mirrored on the GPU (flat POD arrays, as they are on the host), with the kernels
+/// that use it. Every failure (no device, too little memory, a failed launch) throws
+/// InputError with a one-line message naming the CUDA call and its error string.
+class GpuScene {
+public:
+    /// Uploads `scene` to device 0 after checking with cudaMemGetInfo that it fits (with
+    /// `extraBytes` more for film or ray buffers the caller will need).
+    static std::unique_ptr<GpuScene> upload(const Scene& scene, size_t extraBytes = 0);
+    ~GpuScene();
+    GpuScene(const GpuScene&) = delete;
+    GpuScene& operator=(const GpuScene&) = delete;
+
+    /// Path traces like renderCpu: per pixel the mean of settings.spp tracePath samples, summed
+    /// in sample order; counters.seconds is the kernel's time (CUDA events).
+    LinearImage render(const Camera& camera, const RenderSettings& settings, RenderCounters& counters);
+
+    /// Closest triangle hit (intersectClosest over the triangle BVH) of every ray.
+    std::vector<Hit> intersectClosest(const std::vector<Ray>& rays);
+    /// Whether each ray is blocked by a triangle (occluded over the triangle BVH); 1 or 0.
+    std::vector<uint8_t> occluded(const std::vector<Ray>& rays);
+
+    /// Kernel times in milliseconds of `repeats` launches tracing `rays` (closest hit, or
+    /// any hit when `shadow`), after `warmup` untimed launches. Rays stay on the device.
+    std::vector<float> timeTrace(const std::vector<Ray>& rays, bool shadow, int warmup, int repeats);
+    /// Kernel times in milliseconds of `repeats` path-traced frames after `warmup` ones.
+    std::vector<float> timeRender(const Camera& camera, const RenderSettings& settings, int warmup, int repeats);
+
+    /// Device memory held now, by kind.
+    GpuMemory memory() const;
+    /// The device's name and facts, as probed when uploading.
+    const GpuInfo& info() const;
+
+    struct Impl;
+
+private:
+    explicit GpuScene(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace urbis

@@ -1,0 +1,35 @@
+// The GPU backend of a build without CUDA: every entry point says so (the build uses this file
+// instead of gpu_backend.cu when CMake finds no nvcc).
+#include "gpu/gpu_backend.h"
+
+#include "model/input_error.h"
+
+namespace urbis {
+
+namespace {
+const char* const kNoCuda = "urbis was built without CUDA";
+[[noreturn]] void noCuda() { throw InputError(kNoCuda); }
+} // namespace
+
+GpuInfo probeGpu() {
+    GpuInfo info;
+    info.reason = kNoCuda;
+    return info;
+}
+
+struct GpuScene::Impl {
+    GpuInfo info;
+};
+
+GpuScene::GpuScene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+GpuScene::~GpuScene() = default;
+std::unique_ptr<GpuScene> GpuScene::upload(const Scene&, size_t) { noCuda(); }
+LinearImage GpuScene::render(const Camera&, const RenderSettings&, RenderCounters&) { noCuda(); }
+std::vector<Hit> GpuScene::intersectClosest(const std::vector<Ray>&) { noCuda(); }
+std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>&) { noCuda(); }
+std::vector<float> GpuScene::timeTrace(const std::vector<Ray>&, bool, int, int) { noCuda(); }
+std::vector<float> GpuScene::timeRender(const Camera&, const RenderSettings&, int, int) { noCuda(); }
+GpuMemory GpuScene::memory() const { return {}; }
+const GpuInfo& GpuScene::info() const { return impl_->info; }
+
+} // namespace urbis
