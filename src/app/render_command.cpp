@@ -44,6 +44,12 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     cmd->add_option("--max-depth", o.settings.maxDepth, "Path vertices after the camera")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd->add_option("--rr-depth", o.settings.rrDepth, "Depth where Russian roulette starts")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd->add_option("--rr-survival", o.settings.rrSurvival, "Largest survival probability of Russian roulette")->check(CLI::Range(0.01, 1.0))->capture_default_str();
+    cmd->add_option("--geometry", o.geometry,
+                    "procedural|triangles for every kind, or KIND=MODE,... (kinds: walls, roofs, buildings)")
+        ->capture_default_str();
+    cmd->add_option("--height-scale", o.heightScale, "Multiply every building's height (and min height)")
+        ->check(CLI::Range(0.05, 50.0))
+        ->capture_default_str();
     cmd->add_option("--stats", o.statsFile, "Write counts, memory, timings and rays/s as JSON");
 }
 
@@ -88,6 +94,16 @@ CityModel loadCity(const RenderOptions& o) {
     return importOsm(o.osmFile, params);
 }
 
+/// Scales every building's heights by --height-scale.
+void scaleHeights(CityModel& city, float scale) {
+    if (scale == 1.0f) return;
+    for (Building& b : city.buildings) {
+        b.height *= scale;
+        b.minHeight *= scale;
+        b.roofHeight *= scale;
+    }
+}
+
 Camera chooseCamera(const RenderOptions& o, const CityModel& city, const Bounds3f& cityBounds) {
     float aspect = float(o.settings.width) / float(o.settings.height);
     if (!o.camera.empty()) {
@@ -124,19 +140,22 @@ void runRender(const RenderOptions& o) {
     size_t threads = o.threads ? o.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
     Sun sun = daySun(o);
+    CityMeshOptions meshOptions;
+    meshOptions.geometry = parseGeometryModes(o.geometry);
     checkOutputFolder(o.outFile);
     checkOutputFolder(o.statsFile);
 
     auto t0 = Clock::now();
     CityModel city = loadCity(o);
+    scaleHeights(city, o.heightScale);
     double secondsImport = secondsSince(t0);
 
     t0 = Clock::now();
-    CityMesh cityMesh = meshCity(city);
+    CityMesh cityMesh = meshCity(city, meshOptions);
     double secondsCitygen = secondsSince(t0);
 
     t0 = Clock::now();
-    Scene scene = Scene::build(cityMesh.mesh, cityMesh.materials);
+    Scene scene = Scene::build(cityMesh.mesh, cityMesh.materials, cityMesh.walls);
     scene.ground = GroundPlane{0.0f, cityMesh.groundMaterial, true};
     scene.sun = sun;
     double secondsBvh = secondsSince(t0);
@@ -159,10 +178,17 @@ void runRender(const RenderOptions& o) {
         {"dropped", dropped},
         {"triangles", scene.triangles.size()},
         {"triangles_by_kind", cityMesh.trianglesByKind},
+        {"geometry", {{"walls", representationName(meshOptions.geometry.walls)},
+                      // Procedural roofs are not written yet: roofs are stored triangles in both modes.
+                      {"roofs", representationName(Representation::Triangles)}}},
+        {"walls", scene.walls.size()},
+        {"facade_walls", cityMesh.facadeWalls},
+        {"facade_cells", cityMesh.facadeCells},
         {"bvh_nodes", scene.nodes.size()},
         {"materials", scene.materials.size()},
         {"bytes_scene", memory.total()},
         {"bytes_by_kind", {{"triangles", memory.triangles}, {"triangle_info", memory.triangleInfo},
+                           {"walls", memory.walls}, {"prim_refs", memory.primRefs},
                            {"materials", memory.materials}, {"bvh", memory.bvh}}},
         {"width", o.settings.width}, {"height", o.settings.height}, {"spp", o.settings.spp},
         {"seed", o.settings.seed}, {"threads", threads}, {"device", "cpu"},

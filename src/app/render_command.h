@@ -25,6 +25,8 @@ struct RenderOptions {
     float sunRadiusDeg = 0.27f;
     float exposureEv = 0.0f;
     float metresPerLevel = 3.0f;
+    std::string geometry = "procedural";  ///< --geometry: representation per kind (see parseGeometryModes)
+    float heightScale = 1.0f;             ///< multiplies every building's height (benchmarks of tall cities)
 };
 
 /// Registers the subcommand's options on `app`.
