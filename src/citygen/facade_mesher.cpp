@@ -55,7 +55,7 @@ size_t wallTwinTriangleCount(const WallRecord& wall) {
     for (uint32_t j = 0; j < wall.floors; ++j)
         for (uint32_t i = 0; i < wall.slots; ++i) {
             CellParts cell;
-            cellParts(wall, j, i, cell);
+            cellParts(wall, j, i, CellSide::Both, cell);
             n += partTriangles(cell);
         }
     return n;
@@ -68,7 +68,7 @@ void meshWall(const WallRecord& wall, TriangleMesh& mesh) {
     for (uint32_t j = 0; j < wall.floors; ++j)
         for (uint32_t i = 0; i < wall.slots; ++i) {
             CellParts cell;
-            cellParts(wall, j, i, cell);
+            cellParts(wall, j, i, CellSide::Both, cell);
             addParts(wall, cell, mesh);
         }
 }

@@ -78,6 +78,9 @@ URBIS_HD inline SurfaceHit intersectScene(const SceneView& scene, Ray ray) {
     float tGround = scene.ground.intersect(ray);
     if (tGround > 0.0f) out = {SurfaceKind::Ground, tGround, Vec3f{0, 1, 0}, scene.ground.material, 0, SurfacePart::Whole};
     if (out.valid() && dot(out.normal, ray.dir) > 0.0f) out.normal = -out.normal;
+    // -0 + 0 is +0: signed zeros differ between a wall's exact axes and its twin's cross products, and
+    // the shading frame (Frame::fromZ) branches on the sign of z, so both would sample differently.
+    out.normal = out.normal + Vec3f{0.0f, 0.0f, 0.0f};
     return out;
 }
 

@@ -20,7 +20,7 @@ struct WallPart {
 /// WallPart::axis of a box.
 inline constexpr uint8_t kWallPartBox = 3;
 /// The most parts a cell (or the margins) can have.
-inline constexpr int kMaxCellParts = 20;
+inline constexpr int kMaxCellParts = 24;
 
 /// Per-window choices, the same for every ray: 1 in this many rooms is lit (by day: emissive).
 inline constexpr float kLitRoomChance = 0.3f;
@@ -28,6 +28,11 @@ inline constexpr float kLitRoomChance = 0.3f;
 inline constexpr float kBalconyChance = 0.5f;
 /// Chance that a ground-floor cell of a shop-front wall holds a shop window (as in the thesis).
 inline constexpr float kShopWindowChance = 0.8f;
+
+/// Which parts of a cell a ray can reach first. The glass (or curtain-wall panel) plane closes every
+/// cell: a ray in front of it can only reach the parts in front (frame, jambs, glass, balcony,
+/// mullions), a ray behind it only those behind (room with its front wall, glass, mullions).
+enum class CellSide : uint8_t { Both, Front, Back };
 
 /// Fixed-size list of parts.
 struct CellParts {
@@ -62,7 +67,8 @@ URBIS_HD inline HashStream cellRandom(const WallRecord& wall, uint32_t floor, ui
 /// The room behind an opening: five quads (back, two sides, floor, ceiling) inset from the cell
 /// [u0, u1] x [v0, v1] by a thin inner wall, from w = -depthBack to w = front.
 URBIS_HD inline void addRoom(const WallRecord& wall, float u0, float u1, float v0, float v1, float front,
-                             uint32_t material, CellParts& out) {
+                             uint32_t material, CellSide side, CellParts& out) {
+    if (side == CellSide::Front) return;
     constexpr float kInset = 0.05f;
     const float a = u0 + kInset, b = u1 - kInset, c = v0 + kInset, d = v1 - kInset, back = -wall.depthBack;
     out.addQuad(2, {a, c, back}, {b, d, back}, SurfacePart::Room, material);
@@ -72,29 +78,40 @@ URBIS_HD inline void addRoom(const WallRecord& wall, float u0, float u1, float v
     out.addQuad(1, {a, d, back}, {b, d, front}, SurfacePart::Room, material);
 }
 
+/// The plane w = `w` of the cell [u0, u1] x [v0, v1] around the opening [ou0, ou1] x [ov0, ov1]: four quads.
+URBIS_HD inline void addFrame(float u0, float u1, float v0, float v1, float ou0, float ou1, float ov0, float ov1, float w,
+                              SurfacePart part, uint32_t material, CellParts& out) {
+    out.addQuad(2, {u0, v0, w}, {ou0, v1, w}, part, material);
+    out.addQuad(2, {ou1, v0, w}, {u1, v1, w}, part, material);
+    out.addQuad(2, {ou0, v0, w}, {ou1, ov0, w}, part, material);
+    out.addQuad(2, {ou0, ov1, w}, {ou1, v1, w}, part, material);
+}
+
 /// A recessed opening [ou0, ou1] x [ov0, ov1] in the cell [u0, u1] x [v0, v1]: the wall plane around
-/// it, its jambs, the glass `reveal` metres deep and the room behind.
+/// it and its jambs (front), the glass `reveal` metres deep (both sides) and the room behind, whose
+/// front wall lies in the glass plane (back).
 URBIS_HD inline void addOpening(const WallRecord& wall, float u0, float u1, float v0, float v1, float ou0, float ou1,
-                                float ov0, float ov1, uint32_t roomMaterial, CellParts& out) {
+                                float ov0, float ov1, uint32_t roomMaterial, CellSide side, CellParts& out) {
     const uint32_t m = wall.wallMaterial;
     const float r = -wall.reveal;
-    out.addQuad(2, {u0, v0, 0}, {ou0, v1, 0}, SurfacePart::Facade, m);
-    out.addQuad(2, {ou1, v0, 0}, {u1, v1, 0}, SurfacePart::Facade, m);
-    out.addQuad(2, {ou0, v0, 0}, {ou1, ov0, 0}, SurfacePart::Facade, m);
-    out.addQuad(2, {ou0, ov1, 0}, {ou1, v1, 0}, SurfacePart::Facade, m);
-    out.addQuad(0, {ou0, ov0, r}, {ou0, ov1, 0}, SurfacePart::Jamb, m);
-    out.addQuad(0, {ou1, ov0, r}, {ou1, ov1, 0}, SurfacePart::Jamb, m);
-    out.addQuad(1, {ou0, ov0, r}, {ou1, ov0, 0}, SurfacePart::Jamb, m);
-    out.addQuad(1, {ou0, ov1, r}, {ou1, ov1, 0}, SurfacePart::Jamb, m);
+    if (side != CellSide::Back) {
+        addFrame(u0, u1, v0, v1, ou0, ou1, ov0, ov1, 0.0f, SurfacePart::Facade, m, out);
+        out.addQuad(0, {ou0, ov0, r}, {ou0, ov1, 0}, SurfacePart::Jamb, m);
+        out.addQuad(0, {ou1, ov0, r}, {ou1, ov1, 0}, SurfacePart::Jamb, m);
+        out.addQuad(1, {ou0, ov0, r}, {ou1, ov0, 0}, SurfacePart::Jamb, m);
+        out.addQuad(1, {ou0, ov1, r}, {ou1, ov1, 0}, SurfacePart::Jamb, m);
+    }
     out.addQuad(2, {ou0, ov0, r}, {ou1, ov1, r}, SurfacePart::Glass,
                 wall.facadeMaterials + uint32_t(FacadeMaterial::Glass));
-    addRoom(wall, u0, u1, v0, v1, 0.0f, roomMaterial, out);
+    if (side != CellSide::Front) addFrame(u0, u1, v0, v1, ou0, ou1, ov0, ov1, r, SurfacePart::Room, roomMaterial, out);
+    addRoom(wall, u0, u1, v0, v1, r, roomMaterial, side, out);
 }
 
 /// A balcony in front of the cell's opening [ou0, ou1]: a slab on the cell's floor and a railing
 /// (front and two sides) around it, depthFront metres deep.
 URBIS_HD inline void addBalcony(const WallRecord& wall, float u0, float u1, float v0, float ou0, float ou1,
-                                CellParts& out) {
+                                CellSide side, CellParts& out) {
+    if (side == CellSide::Back) return;
     constexpr float kSlab = 0.15f, kRail = 0.05f, kRailHeight = 1.0f;
     const float a = fmaxf(u0 + 0.1f, ou0 - 0.6f), b = fminf(u1 - 0.1f, ou1 + 0.6f), f = wall.depthFront;
     const uint32_t slab = wall.facadeMaterials + uint32_t(FacadeMaterial::Slab);
@@ -109,7 +126,7 @@ URBIS_HD inline void addBalcony(const WallRecord& wall, float u0, float u1, floa
 /// A curtain-wall panel filling the cell: half mullions on its four edges, a spandrel below
 /// wall.sillHeight and glass above it, both `reveal` deep, and the room behind.
 URBIS_HD inline void addCurtainPanel(const WallRecord& wall, float u0, float u1, float v0, float v1,
-                                     uint32_t roomMaterial, CellParts& out) {
+                                     uint32_t roomMaterial, CellSide side, CellParts& out) {
     constexpr float kHalfMullion = 0.06f, kMullionDepth = 0.12f;
     const float r = -wall.reveal, m = kHalfMullion;
     const uint32_t mullion = wall.facadeMaterials + uint32_t(FacadeMaterial::Mullion);
@@ -122,35 +139,56 @@ URBIS_HD inline void addCurtainPanel(const WallRecord& wall, float u0, float u1,
                 wall.facadeMaterials + uint32_t(FacadeMaterial::Spandrel));
     out.addQuad(2, {u0 + m, split, r}, {u1 - m, v1 - m, r}, SurfacePart::Glass,
                 wall.facadeMaterials + uint32_t(FacadeMaterial::Glass));
-    addRoom(wall, u0, u1, v0, v1, r, roomMaterial, out);
+    addRoom(wall, u0, u1, v0, v1, r, roomMaterial, side, out);
 }
 
-/// Every part of cell (floor, slot) of `wall`, in wall coordinates; all lie within the cell's
-/// column [u0, u1] x [v0, v1] (any w), which lets the grid traversal stop at the first cell hit.
-URBIS_HD inline void cellParts(const WallRecord& wall, uint32_t floor, uint32_t slot, CellParts& out) {
-    const float u0 = wall.gridU + wall.slotWidth * float(slot), u1 = u0 + wall.slotWidth;
-    const float v0 = wall.gridV + wall.floorHeight * float(floor), v1 = v0 + wall.floorHeight;
+/// What a punched cell holds, drawn from its hash: the cell's extent, its opening (window, balcony
+/// door or shop window) and the room's material.
+struct CellLayout {
+    float u0, u1, v0, v1;        ///< the cell
+    float ou0, ou1, ov0, ov1;    ///< the opening (punched walls)
+    uint32_t roomMaterial;
+    bool balcony;
+};
+
+/// The layout of cell (floor, slot) of `wall`.
+URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, uint32_t slot) {
+    CellLayout c;
+    c.u0 = wall.gridU + wall.slotWidth * float(slot);
+    c.u1 = c.u0 + wall.slotWidth;
+    c.v0 = wall.gridV + wall.floorHeight * float(floor);
+    c.v1 = c.v0 + wall.floorHeight;
     HashStream rng = cellRandom(wall, floor, slot);
     const bool lit = rng.uniform() < kLitRoomChance;
-    const uint32_t room = wall.facadeMaterials + uint32_t(lit ? FacadeMaterial::RoomLit : FacadeMaterial::RoomDark);
-    if (wall.style == WallStyle::Curtain) {
-        addCurtainPanel(wall, u0, u1, v0, v1, room, out);
-        return;
-    }
+    c.roomMaterial = wall.facadeMaterials + uint32_t(lit ? FacadeMaterial::RoomLit : FacadeMaterial::RoomDark);
     const float choice = rng.uniform();
+    c.balcony = false;
     if ((wall.flags & kWallShopFront) && floor == 0 && choice < kShopWindowChance) {
-        addOpening(wall, u0, u1, v0, v1, u0 + 0.25f, u1 - 0.25f, v0 + 0.35f, v1 - fminf(0.7f, 0.25f * wall.floorHeight),
-                   room, out);
+        c.ou0 = c.u0 + 0.25f;
+        c.ou1 = c.u1 - 0.25f;
+        c.ov0 = c.v0 + 0.35f;
+        c.ov1 = c.v1 - fminf(0.7f, 0.25f * wall.floorHeight);
+        return c;
+    }
+    c.ou0 = c.u0 + 0.5f * (wall.slotWidth - wall.windowWidth);
+    c.ou1 = c.ou0 + wall.windowWidth;
+    c.ov1 = c.v0 + wall.sillHeight + wall.windowHeight;
+    c.balcony = (wall.flags & kWallBalconies) && floor > 0 && choice < kBalconyChance;
+    c.ov0 = c.v0 + (c.balcony ? 0.15f : wall.sillHeight);
+    return c;
+}
+
+/// The parts of cell (floor, slot) of `wall` on `side` of its glass plane, in wall coordinates; all
+/// lie within the cell's column [u0, u1] x [v0, v1] (any w), which lets the grid traversal stop at
+/// the first cell hit.
+URBIS_HD inline void cellParts(const WallRecord& wall, uint32_t floor, uint32_t slot, CellSide side, CellParts& out) {
+    const CellLayout c = cellLayout(wall, floor, slot);
+    if (wall.style == WallStyle::Curtain) {
+        addCurtainPanel(wall, c.u0, c.u1, c.v0, c.v1, c.roomMaterial, side, out);
         return;
     }
-    const float ou0 = u0 + 0.5f * (wall.slotWidth - wall.windowWidth), ou1 = ou0 + wall.windowWidth;
-    const float ov1 = v0 + wall.sillHeight + wall.windowHeight;
-    if ((wall.flags & kWallBalconies) && floor > 0 && choice < kBalconyChance) {
-        addOpening(wall, u0, u1, v0, v1, ou0, ou1, v0 + 0.15f, ov1, room, out);
-        addBalcony(wall, u0, u1, v0, ou0, ou1, out);
-        return;
-    }
-    addOpening(wall, u0, u1, v0, v1, ou0, ou1, v0 + wall.sillHeight, ov1, room, out);
+    addOpening(wall, c.u0, c.u1, c.v0, c.v1, c.ou0, c.ou1, c.ov0, c.ov1, c.roomMaterial, side, out);
+    if (c.balcony) addBalcony(wall, c.u0, c.u1, c.v0, c.ou0, c.ou1, side, out);
 }
 
 } // namespace urbis
