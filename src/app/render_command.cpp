@@ -129,7 +129,10 @@ Sun daySun(const RenderOptions& o) {
 }
 
 nlohmann::json countsJson(const CityModel& city) {
-    return {{"buildings", city.buildings.size()}, {"building_parts", city.buildingParts()},
+    double heights = 0;
+    for (const Building& b : city.buildings) heights += b.height;
+    return {{"buildings", city.buildings.size()},
+            {"mean_building_height", city.buildings.empty() ? 0.0 : heights / double(city.buildings.size())}, {"building_parts", city.buildingParts()},
             {"roads", city.roads.size()}, {"lamps", city.lamps.size()}, {"trees", city.trees.size()},
             {"areas", city.areas.size()}};
 }
