@@ -1,4 +1,5 @@
-// Building meshing: counts, closure and the courtyard hole.
+// Building meshing: counts, closure and the courtyard hole. Walls large enough for a facade become
+// procedural wall records (their triangle twin is tested in facade_twin_test.cpp).
 #include "citygen/city_mesher.h"
 #include "mesh_checks.h"
 
@@ -26,10 +27,18 @@ TEST(BuildingMesher, CourtyardHasWallsRoofAndHole) {
     CityModel city;
     city.buildings = {courtyardBuilding(0.0f)};
     CityMesh out = meshCity(city);
-    // 8 ring edges -> 16 wall triangles; a square annulus needs 8 roof triangles.
-    EXPECT_EQ(out.trianglesByKind["walls"], 16u);
+    // 8 ring edges -> 8 procedural walls; a square annulus needs 8 roof triangles.
+    EXPECT_EQ(out.walls.size(), 8u);
+    EXPECT_EQ(out.trianglesByKind["walls"], 0u);
     EXPECT_EQ(out.trianglesByKind["roofs"], 8u);
-    EXPECT_EQ(out.mesh.size(), 16u + 8u);
+    EXPECT_EQ(out.mesh.size(), 8u);
+    // Courtyard walls face into the courtyard: their normals point away from its centre's far side.
+    for (const WallRecord& w : out.walls) {
+        const Vec3f mid = w.worldFromWall(0.5f * w.width, 0, 0);
+        const bool courtyard = mid.x > 9.9f && mid.x < 20.1f && -mid.z > 4.9f && -mid.z < 15.1f;
+        const Vec3f toCentre = Vec3f{15, 0, -10} - mid;
+        EXPECT_EQ(dot(w.normal, toCentre) > 0.0f, courtyard) << "wall " << w.wallIndex;
+    }
     // No roof triangle covers the courtyard's centre.
     for (size_t i = 0; i < out.mesh.size(); ++i) {
         const Triangle& t = out.mesh.triangles[i];
@@ -42,7 +51,7 @@ TEST(BuildingMesher, CourtyardHasWallsRoofAndHole) {
 
 TEST(BuildingMesher, FloatingPartIsClosed) {
     CityModel city;
-    city.buildings = {courtyardBuilding(4.0f)};
+    city.buildings = {courtyardBuilding(10.0f)};   // 2 m walls: too low for a facade, plain quads
     CityMesh out = meshCity(city);
     TriangleMesh building;
     for (size_t i = 0; i < out.mesh.size(); ++i)
@@ -57,5 +66,5 @@ TEST(BuildingMesher, UntriangulableFootprintIsCounted) {
     city.buildings = {courtyardBuilding(0.0f), broken};
     CityMesh out = meshCity(city);
     EXPECT_EQ(out.dropped["triangulation_failed"], 1u);
-    EXPECT_EQ(out.trianglesByKind["walls"], 16u);
+    EXPECT_EQ(out.walls.size(), 8u);
 }

@@ -33,9 +33,13 @@ TEST(CliRender, StatsFileHasTheKeysScriptsCompare) {
     CommandResult r = runUrbis(kSmall + "--stats stats.json", dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto stats = nlohmann::json::parse(readFile(dir / "stats.json"));
-    for (const char* key : {"triangles", "bvh_nodes", "bytes_scene", "seconds_render", "rays_per_second"})
+    for (const char* key : {"triangles", "walls", "facade_cells", "bvh_nodes", "bytes_scene", "seconds_render",
+                            "rays_per_second"})
         EXPECT_TRUE(stats.contains(key)) << key;
-    EXPECT_GT(stats["triangles"].get<size_t>(), 60u * 10u);
+    // Procedural by default: facades are wall records, roofs (and walls too small for a facade) triangles.
+    EXPECT_GT(stats["walls"].get<size_t>(), 60u * 3u);
+    EXPECT_GT(stats["facade_cells"].get<size_t>(), stats["walls"].get<size_t>());
+    EXPECT_GT(stats["triangles"].get<size_t>(), 60u);
     EXPECT_GT(stats["bvh_nodes"].get<size_t>(), 1u);
     EXPECT_GT(stats["rays_per_second"].get<double>(), 0.0);
     size_t bytes = 0;

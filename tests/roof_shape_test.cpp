@@ -75,7 +75,7 @@ TEST(RoofShapes, GeneratedCityRoofsAreWatertight) {
         sloped += b.roofShape != RoofShape::Flat;
     }
     EXPECT_GT(sloped, 20u);
-    const CityMesh out = meshCity(city);
+    const CityMesh out = meshCity(city, massModel());
     EXPECT_TRUE(out.roofFallbacks.empty());
     std::vector<TriangleMesh> byBuilding(city.buildings.size());
     for (size_t i = 0; i < out.mesh.size(); ++i) byBuilding[out.mesh.info[i].object - 1].add(out.mesh.triangles[i], out.mesh.info[i]);

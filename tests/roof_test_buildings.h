@@ -43,11 +43,18 @@ inline Building roofed(Polygon footprint, RoofShape shape, float minHeight, floa
     return b;
 }
 
-/// The city mesh of one building.
+/// Mesher options for closed mass models: plain walls instead of facades.
+inline CityMeshOptions massModel() {
+    CityMeshOptions options;
+    options.facades = false;
+    return options;
+}
+
+/// The city mesh of one building, as a closed mass model.
 inline CityMesh meshOne(const Building& b) {
     CityModel city;
     city.buildings = {b};
-    return meshCity(city);
+    return meshCity(city, massModel());
 }
 
 } // namespace urbis::test

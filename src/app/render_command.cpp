@@ -45,6 +45,12 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     cmd->add_option("--max-depth", o.settings.maxDepth, "Path vertices after the camera")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd->add_option("--rr-depth", o.settings.rrDepth, "Depth where Russian roulette starts")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd->add_option("--rr-survival", o.settings.rrSurvival, "Largest survival probability of Russian roulette")->check(CLI::Range(0.01, 1.0))->capture_default_str();
+    cmd->add_option("--geometry", o.geometry,
+                    "procedural|triangles for every kind, or KIND=MODE,... (kinds: walls, roofs, buildings)")
+        ->capture_default_str();
+    cmd->add_option("--height-scale", o.heightScale, "Multiply every building's height (and min height)")
+        ->check(CLI::Range(0.05, 50.0))
+        ->capture_default_str();
     cmd->add_option("--stats", o.statsFile, "Write counts, memory, timings and rays/s as JSON");
     cmd->add_option("--device", o.device, "auto (the GPU if usable, else the CPU), cpu or cuda")
         ->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
@@ -91,6 +97,16 @@ CityModel loadCity(const RenderOptions& o) {
     return importOsm(o.osmFile, params);
 }
 
+/// Scales every building's heights by --height-scale.
+void scaleHeights(CityModel& city, float scale) {
+    if (scale == 1.0f) return;
+    for (Building& b : city.buildings) {
+        b.height *= scale;
+        b.minHeight *= scale;
+        b.roofHeight *= scale;
+    }
+}
+
 Camera chooseCamera(const RenderOptions& o, const CityModel& city, const Bounds3f& cityBounds) {
     float aspect = float(o.settings.width) / float(o.settings.height);
     if (!o.camera.empty()) {
@@ -116,7 +132,10 @@ Sun daySun(const RenderOptions& o) {
 }
 
 nlohmann::json countsJson(const CityModel& city) {
-    return {{"buildings", city.buildings.size()}, {"building_parts", city.buildingParts()},
+    double heights = 0;
+    for (const Building& b : city.buildings) heights += b.height;
+    return {{"buildings", city.buildings.size()},
+            {"mean_building_height", city.buildings.empty() ? 0.0 : heights / double(city.buildings.size())}, {"building_parts", city.buildingParts()},
             {"roads", city.roads.size()}, {"lamps", city.lamps.size()}, {"trees", city.trees.size()},
             {"areas", city.areas.size()}};
 }
@@ -126,16 +145,19 @@ nlohmann::json countsJson(const CityModel& city) {
 PreparedScene prepareScene(const RenderOptions& o) {
     PreparedScene p;
     Sun sun = daySun(o);
+    CityMeshOptions meshOptions;
+    meshOptions.geometry = parseGeometryModes(o.geometry);
     auto t0 = Clock::now();
     p.city = loadCity(o);
+    scaleHeights(p.city, o.heightScale);
     p.secondsImport = secondsSince(t0);
 
     t0 = Clock::now();
-    p.mesh = meshCity(p.city);
+    p.mesh = meshCity(p.city, meshOptions);
     p.secondsCitygen = secondsSince(t0);
 
     t0 = Clock::now();
-    p.scene = Scene::build(p.mesh.mesh, p.mesh.materials);
+    p.scene = Scene::build(p.mesh.mesh, p.mesh.materials, p.mesh.walls);
     p.scene.ground = GroundPlane{0.0f, p.mesh.groundMaterial, true};
     p.scene.sun = sun;
     p.secondsBvh = secondsSince(t0);
@@ -147,7 +169,8 @@ PreparedScene prepareScene(const RenderOptions& o) {
 void runRender(const RenderOptions& o) {
     size_t threads = o.threads ? o.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
-    daySun(o);   // fail on a bad --sun before any work
+    daySun(o);   // fail on a bad --sun or --geometry before any work
+    parseGeometryModes(o.geometry);
     checkOutputFolder(o.outFile);
     checkOutputFolder(o.statsFile);
 
@@ -176,16 +199,24 @@ void runRender(const RenderOptions& o) {
         {"dropped", dropped},
         {"triangles", scene.triangles.size()},
         {"triangles_by_kind", cityMesh.trianglesByKind},
+        {"geometry", {{"walls", representationName(parseGeometryModes(o.geometry).walls)},
+                      // Procedural roofs are not written yet: roofs are stored triangles in both modes.
+                      {"roofs", representationName(Representation::Triangles)}}},
+        {"walls", scene.walls.size()},
+        {"facade_walls", cityMesh.facadeWalls},
+        {"facade_cells", cityMesh.facadeCells},
         {"bvh_nodes", scene.nodes.size()},
         {"materials", scene.materials.size()},
         {"bytes_scene", memory.total()},
         {"bytes_by_kind", {{"triangles", memory.triangles}, {"triangle_info", memory.triangleInfo},
+                           {"walls", memory.walls}, {"prim_refs", memory.primRefs},
                            {"materials", memory.materials}, {"bvh", memory.bvh}}},
         {"width", o.settings.width}, {"height", o.settings.height}, {"spp", o.settings.spp},
         {"seed", o.settings.seed}, {"threads", threads}, {"device", device.device},
         {"device_name", device.name},
         {"bytes_device", {{"bvh", device.memory.nodes}, {"triangles", device.memory.triangles},
-                          {"triangle_info", device.memory.triangleInfo}, {"materials", device.memory.materials},
+                          {"triangle_info", device.memory.triangleInfo}, {"prim_refs", device.memory.primRefs},
+                          {"walls", device.memory.walls}, {"materials", device.memory.materials},
                           {"film", device.memory.film}, {"total", device.memory.total()}}},
         {"seconds", {{"import", secondsImport}, {"citygen", secondsCitygen}, {"bvh", secondsBvh},
                      {"render", counters.seconds}, {"write", secondsWrite}}},

@@ -30,6 +30,8 @@ struct RenderOptions {
     float exposureEv = -0.6f;
     float metresPerLevel = 3.0f;
     std::string device = "auto";      ///< "auto", "cpu" or "cuda"
+    std::string geometry = "procedural";  ///< --geometry: representation per kind (see parseGeometryModes)
+    float heightScale = 1.0f;             ///< multiplies every building's height (benchmarks of tall cities)
 };
 
 /// A city loaded (or generated), meshed and turned into a scene with its BVH, ground and sun,

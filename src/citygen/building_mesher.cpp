@@ -2,6 +2,8 @@
 
 #include "citygen/roof_mesher.h"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace urbis {
@@ -52,21 +54,61 @@ bool triangulateFootprint(GEOSContextHandle_t geos, const Polygon& footprint, st
     return count > 0;
 }
 
-void addWalls(const Ring& ring, double bottom, double top, TriangleInfo info, TriangleMesh& mesh, size_t& count) {
+/// Twice the signed area of a ring (positive when counter-clockwise).
+double signedArea2(const Ring& ring) {
+    double a = 0;
+    for (size_t i = 0; i < ring.size(); ++i) {
+        const Vec2d& p = ring[i];
+        const Vec2d& q = ring[(i + 1) % ring.size()];
+        a += p.x * q.y - q.x * p.y;
+    }
+    return a;
+}
+
+/// How far the building reaches behind the edge a -> b whose outside normal is `outward`: the
+/// largest distance of an outer-ring point on the inner side.
+float depthBehind(const Ring& outer, Vec2d a, Vec2d outward) {
+    double depth = 0;
+    for (const Vec2d& p : outer) depth = std::max(depth, -((p.x - a.x) * outward.x + (p.y - a.y) * outward.y));
+    return float(depth);
+}
+
+/// One wall per ring edge: a procedural wall record where the edge is large enough for a facade
+/// (and `facade` is given), else a plain quad of two triangles.
+void addWalls(const Ring& ring, bool isHole, const Ring& outer, double bottom, double top, TriangleInfo info,
+              const WallContext* facade, uint32_t& wallIndex, TriangleMesh& mesh, std::vector<WallRecord>& walls,
+              BuildingTriangleCounts& counts) {
+    const double area = signedArea2(ring);
+    const bool outsideRight = isHole ? area < 0.0 : area > 0.0;
     for (size_t i = 0; i < ring.size(); ++i) {
         Vec2d a = ring[i], b = ring[(i + 1) % ring.size()];
+        const uint32_t index = wallIndex++;
+        if (facade) {
+            const double dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
+            const double side = outsideRight ? 1.0 : -1.0;
+            const Vec2d outward{len > 0 ? side * dy / len : 0.0, len > 0 ? -side * dx / len : 0.0};
+            WallRecord wall;
+            if (layoutWall(*facade, a, b, outsideRight, float(bottom), float(top), depthBehind(outer, a, outward), index,
+                           wall)) {
+                walls.push_back(wall);
+                ++counts.wallRecords;
+                continue;
+            }
+        }
         Vec3f a0 = worldFromCity(a, bottom), b0 = worldFromCity(b, bottom);
         Vec3f a1 = worldFromCity(a, top), b1 = worldFromCity(b, top);
         mesh.add({a0, b0, b1}, info);
         mesh.add({a0, b1, a1}, info);
-        count += 2;
+        counts.walls += 2;
+        ++counts.plainWalls;
     }
 }
 
 } // namespace
 
 bool meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleInfo wallInfo, TriangleInfo roofInfo,
-                  TriangleMesh& mesh, BuildingTriangleCounts& counts) {
+                  const WallContext* facade, TriangleMesh& mesh, std::vector<WallRecord>& walls,
+                  BuildingTriangleCounts& counts) {
     std::vector<std::array<Vec2d, 3>> footprint;
     if (!triangulateFootprint(geos, building.footprint, footprint)) return false;
     const RoofResult roof = meshRoof(building, footprint, roofInfo, wallInfo, mesh);
@@ -79,8 +121,11 @@ bool meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleIn
             mesh.add({worldFromCity(t[0], bottom), worldFromCity(t[1], bottom), worldFromCity(t[2], bottom)}, wallInfo);
         counts.walls += footprint.size();
     }
-    addWalls(building.footprint.outer, bottom, top, wallInfo, mesh, counts.walls);
-    for (const Ring& hole : building.footprint.holes) addWalls(hole, bottom, top, wallInfo, mesh, counts.walls);
+    const Ring& outer = building.footprint.outer;
+    uint32_t wallIndex = 0;
+    addWalls(outer, false, outer, bottom, top, wallInfo, facade, wallIndex, mesh, walls, counts);
+    for (const Ring& hole : building.footprint.holes)
+        addWalls(hole, true, outer, bottom, top, wallInfo, facade, wallIndex, mesh, walls, counts);
     return true;
 }
 

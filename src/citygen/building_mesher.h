@@ -1,8 +1,10 @@
-// One building's stored triangles: walls from every ring edge up to the roof, the roof
-// (citygen/roof_mesher.h) and a floor where the building floats above the ground, triangulated by GEOS's constrained Delaunay
+// One building's geometry: a procedural wall record per ring edge large enough for a facade (a
+// plain quad of stored triangles otherwise) up to the roof, the roof (citygen/roof_mesher.h) and a
+// floor where the building floats above the ground, triangulated by GEOS's constrained Delaunay
 // triangulation, so holes and concave footprints need no hand-written ear clipping.
 #pragma once
 
+#include "citygen/facade_layout.h"
 #include "citygen/triangle_mesh.h"
 #include "model/city_model.h"
 
@@ -16,15 +18,19 @@ namespace urbis {
 /// City plane (x east, y north, metres) at height h to world (x east, y up, z south).
 inline Vec3f worldFromCity(Vec2d p, double h) { return {float(p.x), float(h), float(-p.y)}; }
 
-/// Triangle counts of one building by part.
+/// Triangle counts of one building by part, and its walls by representation.
 struct BuildingTriangleCounts {
     size_t walls = 0, roofs = 0;
     std::map<std::string, uint64_t> roofFallbacks;  ///< roofs meshed as a simpler shape, by reason
+    size_t wallRecords = 0;   ///< procedural walls
+    size_t plainWalls = 0;    ///< walls too small for a facade (two triangles each)
 };
 
-/// Appends the walls and caps of `building` to `mesh`. Returns false (appending nothing) when GEOS
-/// cannot triangulate the footprint. `geos` is a per-thread GEOS context.
+/// Appends the walls and caps of `building`: plain walls and caps to `mesh`, walls with a facade
+/// (when `facade` is given; all plain when null) to `walls`. Returns false (appending nothing)
+/// when GEOS cannot triangulate the footprint. `geos` is a per-thread GEOS context.
 bool meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleInfo wallInfo, TriangleInfo roofInfo,
-                  TriangleMesh& mesh, BuildingTriangleCounts& counts);
+                  const WallContext* facade, TriangleMesh& mesh, std::vector<WallRecord>& walls,
+                  BuildingTriangleCounts& counts);
 
 } // namespace urbis

@@ -1,9 +1,15 @@
 #include "citygen/city_mesher.h"
 
 #include "citygen/building_mesher.h"
+#include "citygen/facade_mesher.h"
+#include "model/input_error.h"
+#include "scene/memory_budget.h"
+#include "scene/surface_part.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
+#include <cstdio>
 #include <tuple>
 
 namespace urbis {
@@ -25,33 +31,89 @@ private:
     std::map<std::tuple<float, float, float>, uint32_t> index_;
 };
 
+/// The materials of FacadeMaterial, in its order.
+void addFacadeMaterials(std::vector<Material>& out) {
+    Material glass{Vec3f{0.85f, 0.9f, 0.9f}, MaterialKind::Glass};
+    Material roomDark{Vec3f{0.12f, 0.11f, 0.10f}};
+    Material roomLit{Vec3f{0.45f, 0.40f, 0.33f}};
+    roomLit.emission = Vec3f{0.9f, 0.7f, 0.45f};
+    Material slab{Vec3f{0.5f, 0.5f, 0.48f}};
+    Material railing{Vec3f{0.04f, 0.04f, 0.045f}, MaterialKind::Glossy, Vec3f{0.4f, 0.4f, 0.42f}, 60.0f};
+    Material mullion{Vec3f{0.1f, 0.1f, 0.11f}, MaterialKind::Glossy, Vec3f{0.35f, 0.35f, 0.37f}, 120.0f};
+    Material spandrel{Vec3f{0.05f, 0.06f, 0.07f}, MaterialKind::Glossy, Vec3f{0.3f, 0.3f, 0.3f}, 400.0f};
+    for (const Material& m : {glass, roomDark, roomLit, slab, railing, mullion, spandrel}) out.push_back(m);
+    static_assert(uint32_t(FacadeMaterial::Count) == 7, "one material per FacadeMaterial");
+}
+
 struct Chunk {
     TriangleMesh mesh;
+    std::vector<WallRecord> walls;
     BuildingTriangleCounts counts;
     uint64_t failed = 0;
 };
 
+constexpr size_t kChunk = 256;
+
+/// Replaces the procedural walls by their triangle twin, after checking that it fits in memory.
+void meshWallTwins(const CityMeshOptions& options, CityMesh& out) {
+    const size_t twinTriangles = tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, out.walls.size(), 1024), size_t(0),
+        [&](const tbb::blocked_range<size_t>& r, size_t n) {
+            for (size_t i = r.begin(); i != r.end(); ++i) n += wallTwinTriangleCount(out.walls[i]);
+            return n;
+        },
+        [](size_t a, size_t b) { return a + b; });
+    const size_t needed = (twinTriangles + out.mesh.size()) * kBuildBytesPerTriangle;
+    const size_t limit = options.memoryLimit ? options.memoryLimit : availableMemoryBytes();
+    if (limit && needed > limit) {
+        char message[256];
+        std::snprintf(message, sizeof message,
+                      "--geometry walls=triangles: the facades' triangle twin has %zu triangles and needs about %.1f GB "
+                      "to build, more than the %.1f GB available; use --geometry walls=procedural",
+                      twinTriangles, double(needed) / 1e9, double(limit) / 1e9);
+        throw InputError(message);
+    }
+    std::vector<TriangleMesh> parts((out.walls.size() + kChunk - 1) / kChunk);
+    tbb::parallel_for(size_t(0), parts.size(), [&](size_t c) {
+        const size_t end = std::min(out.walls.size(), (c + 1) * kChunk);
+        for (size_t i = c * kChunk; i < end; ++i) meshWall(out.walls[i], parts[c]);
+    });
+    out.mesh.triangles.reserve(out.mesh.size() + twinTriangles);
+    out.mesh.info.reserve(out.mesh.size() + twinTriangles);
+    for (const TriangleMesh& part : parts) out.mesh.append(part);
+    out.trianglesByKind["walls"] += twinTriangles;
+    out.walls.clear();
+    out.walls.shrink_to_fit();
+}
+
 } // namespace
 
-CityMesh meshCity(const CityModel& city) {
+CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     CityMesh out;
     MaterialTable table;
     uint32_t groundMaterial = table.indexOf(Rgb{0.10f, 0.11f, 0.09f});
     std::vector<TriangleInfo> wallInfo(city.buildings.size()), roofInfo(city.buildings.size());
+    std::vector<WallContext> facades(city.buildings.size());
     for (size_t i = 0; i < city.buildings.size(); ++i) {
         const Building& b = city.buildings[i];
-        wallInfo[i] = {table.indexOf(b.wallColour), uint32_t(i + 1)};
-        roofInfo[i] = {table.indexOf(b.roofColour), uint32_t(i + 1)};
+        wallInfo[i] = {table.indexOf(b.wallColour), uint32_t(i + 1), uint32_t(SurfacePart::Facade)};
+        roofInfo[i] = {table.indexOf(b.roofColour), uint32_t(i + 1), uint32_t(SurfacePart::Roof)};
+        facades[i] = {&b, facadeStyleOf(b), uint32_t(i + 1), wallInfo[i].material, 0};
     }
+    out.materials = std::move(table.materials);
+    const uint32_t facadeMaterials = uint32_t(out.materials.size());
+    addFacadeMaterials(out.materials);
+    for (WallContext& f : facades) f.facadeMaterials = facadeMaterials;
 
-    constexpr size_t kChunk = 256;
     std::vector<Chunk> chunks((city.buildings.size() + kChunk - 1) / kChunk);
     tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {
         GEOSContextHandle_t geos = GEOS_init_r();
         Chunk& chunk = chunks[c];
         size_t end = std::min(city.buildings.size(), (c + 1) * kChunk);
         for (size_t i = c * kChunk; i < end; ++i)
-            if (!meshBuilding(geos, city.buildings[i], wallInfo[i], roofInfo[i], chunk.mesh, chunk.counts))
+            if (!meshBuilding(geos, city.buildings[i], wallInfo[i], roofInfo[i], options.facades ? &facades[i] : nullptr,
+                              chunk.mesh, chunk.walls,
+                              chunk.counts))
                 ++chunk.failed;
         GEOS_finish_r(geos);
     });
@@ -60,6 +122,7 @@ CityMesh meshCity(const CityModel& city) {
     uint64_t failed = 0;
     for (const Chunk& chunk : chunks) {
         out.mesh.append(chunk.mesh);
+        out.walls.insert(out.walls.end(), chunk.walls.begin(), chunk.walls.end());
         walls += chunk.counts.walls;
         roofs += chunk.counts.roofs;
         failed += chunk.failed;
@@ -70,9 +133,15 @@ CityMesh meshCity(const CityModel& city) {
         out.cityBounds.extend(t.p1);
         out.cityBounds.extend(t.p2);
     }
+    for (const WallRecord& w : out.walls) {
+        out.cityBounds.extend(w.worldFromWall(0, 0, 0));
+        out.cityBounds.extend(w.worldFromWall(w.width, w.height, 0));
+        out.facadeCells += size_t(w.floors) * w.slots;
+    }
+    out.facadeWalls = out.walls.size();
     out.groundMaterial = groundMaterial;
-    out.materials = std::move(table.materials);
     out.trianglesByKind = {{"walls", walls}, {"roofs", roofs}};
+    if (options.geometry.walls == Representation::Triangles) meshWallTwins(options, out);
     if (failed) out.dropped["triangulation_failed"] = failed;
     return out;
 }

@@ -1,7 +1,10 @@
-// CityModel -> stored triangles: every building's walls and roof, and the ground's material.
+// CityModel -> scene geometry: every building's walls (procedural wall records, or their triangle
+// twin) and roof, and the ground's material.
 #pragma once
 
+#include "citygen/geometry_modes.h"
 #include "citygen/triangle_mesh.h"
+#include "geometry/wall_record.h"
 #include "math/bounds.h"
 #include "model/city_model.h"
 #include "scene/material.h"
@@ -11,17 +14,31 @@
 
 namespace urbis {
 
+struct CityMeshOptions {
+    GeometryModes geometry;
+    /// false: every wall is a plain quad of two triangles, so each building is a closed mass
+    /// model (its triangles share every edge); the roof tests rely on that.
+    bool facades = true;
+    /// Bytes the triangle twin may take to build; 0: the memory available now.
+    size_t memoryLimit = 0;
+};
+
 struct CityMesh {
     TriangleMesh mesh;
+    std::vector<WallRecord> walls;             ///< procedural walls (empty with walls=triangles)
     std::vector<Material> materials;
     uint32_t groundMaterial = 0;               ///< the ground plane's entry in materials
     Bounds3f cityBounds;                       ///< world bounds of the buildings (ground excluded)
     std::map<std::string, size_t> trianglesByKind;
+    size_t facadeWalls = 0;                    ///< walls with a facade, in either representation
+    size_t facadeCells = 0;                    ///< their floors x slots
     std::map<std::string, uint64_t> dropped;   ///< buildings that could not be meshed, by reason
     std::map<std::string, uint64_t> roofFallbacks;  ///< roofs meshed as a simpler shape (unknown shape -> flat, ...), by reason
 };
 
-/// Meshes the whole city (object id of building i is i + 1; 0 is the ground) in parallel; the result does not depend on the thread count.
-CityMesh meshCity(const CityModel& city);
+/// Meshes the whole city (object id of building i is i + 1; 0 is the ground) in parallel; the
+/// result does not depend on the thread count. With walls=triangles the facades' triangle twin
+/// is estimated first and InputError thrown, before building it, if it would not fit in memory.
+CityMesh meshCity(const CityModel& city, const CityMeshOptions& options = {});
 
 } // namespace urbis

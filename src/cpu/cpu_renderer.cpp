@@ -1,6 +1,7 @@
 #include "cpu/cpu_renderer.h"
 
 #include "integrators/path_tracer.h"
+#include "integrators/primary_id.h"
 
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
@@ -68,6 +69,15 @@ LinearImage renderCpu(const SceneView& scene, const Camera& camera, const Render
     counters.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     counters.rays = rays;
     return image;
+}
+
+std::vector<uint32_t> renderIdsCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings) {
+    std::vector<uint32_t> ids(size_t(settings.width) * settings.height);
+    tbb::parallel_for(uint32_t(0), settings.height, [&](uint32_t y) {
+        for (uint32_t x = 0; x < settings.width; ++x)
+            ids[size_t(y) * settings.width + x] = primaryHitId(scene, camera, settings, x, y);
+    });
+    return ids;
 }
 
 } // namespace urbis

@@ -21,4 +21,7 @@ struct RenderCounters {
 LinearImage renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
                       bool showProgress, RenderCounters& counters);
 
+/// The ID AOV: primaryHitId of every pixel, row by row (width x height).
+std::vector<uint32_t> renderIdsCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings);
+
 } // namespace urbis

@@ -2,11 +2,14 @@
 // where kinds are dispatched, so new kinds join here without touching the integrators.
 #pragma once
 
+#include "geometry/wall_intersect.h"
+#include "scene/prim_ref.h"
 #include "scene/scene_view.h"
+#include "scene/surface_part.h"
 
 namespace urbis {
 
-enum class SurfaceKind : uint32_t { None, Triangle, Ground };
+enum class SurfaceKind : uint32_t { None, Triangle, Wall, Ground };
 
 /// What the integrator needs of a hit: where, which way the surface faces, what it is made of.
 struct SurfaceHit {
@@ -15,28 +18,93 @@ struct SurfaceHit {
     Vec3f normal;          ///< unit geometric normal, facing against the ray
     uint32_t material = 0;
     uint32_t object = 0;   ///< 0 for the ground, building index + 1 otherwise
+    SurfacePart part = SurfacePart::Whole;
     URBIS_HD bool valid() const { return kind != SurfaceKind::None; }
 };
+
+/// The triangle hit `prim` (an index into scene.geometry.triangles) as a surface hit.
+URBIS_HD inline SurfaceHit triangleSurface(const SceneView& scene, uint32_t prim, float t) {
+    const Triangle& tri = scene.geometry.triangles[prim];
+    const TriangleInfo info = scene.triangleInfo[prim];
+    return {SurfaceKind::Triangle, t, normalize(cross(tri.p1 - tri.p0, tri.p2 - tri.p0)), info.material, info.object,
+            SurfacePart(info.part)};
+}
+
+/// Closest hit over a BVH whose leaves mix kinds (scene.primRefs): a switch per leaf primitive.
+URBIS_HD inline SurfaceHit intersectMixed(const SceneView& scene, Ray& ray) {
+    const WatertightRay wr(ray);
+    Hit hit;
+    WallHit wallHit;
+    traverseBvh<false>(scene.geometry.nodes, ray, hit, [&](uint32_t slot, Ray& r, Hit& h) {
+        const uint32_t ref = scene.primRefs[slot];
+        switch (primRefKind(ref)) {
+        case PrimKind::Triangle: {
+            float t, u, v;
+            if (!intersectTriangle(scene.geometry.triangles[primRefIndex(ref)], r, wr, t, u, v)) return false;
+            h = {ref, t, u, v};
+            r.tmax = t;
+            return true;
+        }
+        case PrimKind::Wall: {
+            WallHit w;
+            if (!intersectWall<false>(scene.walls[primRefIndex(ref)], r, w)) return false;
+            h = {ref, w.t, 0, 0};
+            wallHit = w;
+            r.tmax = w.t;
+            return true;
+        }
+        }
+        return false;
+    });
+    if (!hit.valid()) return {};
+    const uint32_t index = primRefIndex(hit.prim);
+    if (primRefKind(hit.prim) == PrimKind::Triangle) return triangleSurface(scene, index, hit.t);
+    const WallRecord& wall = scene.walls[index];
+    return {SurfaceKind::Wall, hit.t, wallAxisNormal(wall, wallHit.axis), wallHit.material, wall.object, wallHit.part};
+}
 
 /// The closest surface along `ray` within (tmin, tmax).
 URBIS_HD inline SurfaceHit intersectScene(const SceneView& scene, Ray ray) {
     SurfaceHit out;
-    Hit hit = intersectClosest(scene.geometry, ray);
-    if (hit.valid()) {
-        const Triangle& tri = scene.geometry.triangles[hit.prim];
-        out = {SurfaceKind::Triangle, hit.t, normalize(cross(tri.p1 - tri.p0, tri.p2 - tri.p0)),
-               scene.triangleInfo[hit.prim].material, scene.triangleInfo[hit.prim].object};
-        ray.tmax = hit.t;
+    if (scene.primRefs) {
+        out = intersectMixed(scene, ray);
+    } else {
+        Hit hit = intersectClosest(scene.geometry, ray);
+        if (hit.valid()) {
+            out = triangleSurface(scene, hit.prim, hit.t);
+            ray.tmax = hit.t;
+        }
     }
     float tGround = scene.ground.intersect(ray);
-    if (tGround > 0.0f) out = {SurfaceKind::Ground, tGround, Vec3f{0, 1, 0}, scene.ground.material, 0};
+    if (tGround > 0.0f) out = {SurfaceKind::Ground, tGround, Vec3f{0, 1, 0}, scene.ground.material, 0, SurfacePart::Whole};
     if (out.valid() && dot(out.normal, ray.dir) > 0.0f) out.normal = -out.normal;
+    // -0 + 0 is +0: signed zeros differ between a wall's exact axes and its twin's cross products, and
+    // the shading frame (Frame::fromZ) branches on the sign of z, so both would sample differently.
+    out.normal = out.normal + Vec3f{0.0f, 0.0f, 0.0f};
     return out;
 }
 
 /// Whether anything blocks `ray` within (tmin, tmax).
 URBIS_HD inline bool occludedScene(const SceneView& scene, const Ray& ray) {
-    return scene.ground.intersect(ray) > 0.0f || occluded(scene.geometry, ray);
+    if (scene.ground.intersect(ray) > 0.0f) return true;
+    if (!scene.primRefs) return occluded(scene.geometry, ray);
+    const WatertightRay wr(ray);
+    Ray r = ray;
+    Hit hit;
+    return traverseBvh<true>(scene.geometry.nodes, r, hit, [&](uint32_t slot, Ray& rr, Hit&) {
+        const uint32_t ref = scene.primRefs[slot];
+        switch (primRefKind(ref)) {
+        case PrimKind::Triangle: {
+            float t, u, v;
+            return intersectTriangle(scene.geometry.triangles[primRefIndex(ref)], rr, wr, t, u, v);
+        }
+        case PrimKind::Wall: {
+            WallHit w;
+            return intersectWall<true>(scene.walls[primRefIndex(ref)], rr, w);
+        }
+        }
+        return false;
+    });
 }
 
 } // namespace urbis

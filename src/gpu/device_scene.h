@@ -11,6 +11,8 @@ struct DeviceScene {
     DeviceBuffer<BvhNode> nodes;
     DeviceBuffer<Triangle> triangles;
     DeviceBuffer<TriangleInfo> triangleInfo;
+    DeviceBuffer<uint32_t> primRefs;
+    DeviceBuffer<WallRecord> walls;
     DeviceBuffer<Material> materials;
     GroundPlane ground;
     Sun sun;
@@ -24,6 +26,8 @@ struct DeviceScene {
         f(scene.nodes, nodes);
         f(scene.triangles, triangles);
         f(scene.info, triangleInfo);
+        f(scene.primRefs, primRefs);
+        f(scene.walls, walls);
         f(scene.materials, materials);
     }
 
@@ -46,7 +50,14 @@ struct DeviceScene {
     /// What kernels read: the same SceneView the CPU backend gets, over device pointers.
     SceneView view() const {
         return SceneView{TriangleSceneView{nodes.data(), triangles.data(), uint32_t(triangles.size())},
-                         triangleInfo.data(), materials.data(), ground, sun, sky};
+                         triangleInfo.data(),
+                         primRefs.size() == 0 ? nullptr : primRefs.data(),
+                         walls.data(),
+                         uint32_t(walls.size()),
+                         materials.data(),
+                         ground,
+                         sun,
+                         sky};
     }
 };
 

@@ -250,6 +250,8 @@ GpuMemory GpuScene::memory() const {
     out.nodes = m.scene.nodes.bytes();
     out.triangles = m.scene.triangles.bytes();
     out.triangleInfo = m.scene.triangleInfo.bytes();
+    out.primRefs = m.scene.primRefs.bytes();
+    out.walls = m.scene.walls.bytes();
     out.materials = m.scene.materials.bytes();
     out.film = m.film.bytes();
     out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes();

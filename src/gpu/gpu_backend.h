@@ -32,8 +32,8 @@ GpuInfo probeGpu();
 
 /// Device memory held by a GpuScene, by kind (bytes).
 struct GpuMemory {
-    size_t nodes = 0, triangles = 0, triangleInfo = 0, materials = 0, film = 0, rays = 0;
-    size_t total() const { return nodes + triangles + triangleInfo + materials + film + rays; }
+    size_t nodes = 0, triangles = 0, triangleInfo = 0, primRefs = 0, walls = 0, materials = 0, film = 0, rays = 0;
+    size_t total() const { return nodes + triangles + triangleInfo + primRefs + walls + materials + film + rays; }
 };
 
 /// A Scene mirrored on the GPU (flat POD arrays, as they are on the host), with the kernels

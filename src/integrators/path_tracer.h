@@ -1,7 +1,9 @@
-// The unidirectional path tracer: Lambertian surfaces, sun by next-event estimation,
-// sky by BSDF sampling, Russian roulette. Host+device; runs once per pixel sample.
+// The unidirectional path tracer: diffuse, glossy, mirror and glass surfaces, emitters found by
+// BSDF sampling, sun by next-event estimation (and by specular bounces), sky by BSDF sampling,
+// Russian roulette. Host+device; runs once per pixel sample.
 #pragma once
 
+#include "integrators/bsdf.h"
 #include "math/rng.h"
 #include "math/sampling.h"
 #include "scene/camera.h"
@@ -31,40 +33,48 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
     Ray ray = camera.generateRay((float(px) + jx) / float(settings.width), (float(py) + jy) / float(settings.height));
     PathSample out;
     Vec3f throughput{1, 1, 1};
+    bool specularBounce = false;   // the camera ray does not show the sun's disk
     for (uint32_t depth = 0;; ++depth) {
         SurfaceHit hit = intersectScene(scene, ray);
         ++out.rays;
         if (!hit.valid()) {
             out.radiance += throughput * scene.sky.radiance(ray.dir);
+            // Light sampling cannot reach the disk through a mirror or glass: count it here.
+            if (specularBounce && scene.sun.contains(normalize(ray.dir))) out.radiance += throughput * scene.sun.radiance;
             break;
         }
         Vec3f normal = hit.normal;
-        Vec3f albedo = scene.materials[hit.material].albedo;
-        Vec3f origin = offsetRayOrigin(ray.origin + ray.dir * hit.t, normal);
+        const Material& material = scene.materials[hit.material];
+        // No emitter is light-sampled yet, so every hit counts its emission in full.
+        out.radiance += throughput * material.emission;
+        Vec3f wo = normalize(-ray.dir);
+        Vec3f position = ray.origin + ray.dir * hit.t;
 
         // Next-event estimation towards the sun's disk; the sky lookup never includes the disk.
         float u1 = rng.draw(), u2 = rng.draw();
-        if (scene.sun.enabled()) {
+        if (scene.sun.enabled() && !isSpecular(material)) {
             Vec3f toSun = scene.sun.sampleDirection(u1, u2);
-            float cosine = dot(toSun, normal);
-            if (cosine > 0.0f) {
-                Ray shadow{origin, toSun};
+            Vec3f fCos = evalBsdfCos(material, wo, toSun, normal);
+            if (maxComponent(fCos) > 0.0f) {
+                Ray shadow{offsetRayOrigin(position, normal), toSun};
                 ++out.rays;
-                if (!occludedScene(scene, shadow))
-                    out.radiance += throughput * albedo * scene.sun.radiance * (cosine / (kPi * scene.sun.pdf()));
+                if (!occludedScene(scene, shadow)) out.radiance += throughput * fCos * scene.sun.radiance * (1.0f / scene.sun.pdf());
             }
         }
         if (depth + 1 >= settings.maxDepth) break;
 
-        // Cosine sampling makes the Lambertian weight f * cos / pdf equal to the albedo.
         float u3 = rng.draw(), u4 = rng.draw();
-        throughput *= albedo;
+        float u5 = material.kind == MaterialKind::Lambertian ? 0.0f : rng.draw();
+        BsdfSample bsdf;
+        if (!sampleBsdf(material, wo, normal, u5, u3, u4, bsdf)) break;
+        throughput *= bsdf.weight;
+        specularBounce = bsdf.specular;
         if (depth + 1 >= settings.rrDepth) {
             float survival = fminf(maxComponent(throughput), settings.rrSurvival);
             if (rng.draw() >= survival) break;
             throughput *= 1.0f / survival;
         }
-        ray = Ray{origin, Frame::fromZ(normal).toWorld(sampleCosineHemisphere(u3, u4))};
+        ray = Ray{offsetRayOrigin(position, dot(bsdf.dir, normal) > 0.0f ? normal : -normal), bsdf.dir};
     }
     return out;
 }

@@ -33,4 +33,15 @@ URBIS_HD inline Vec3f sampleUniformCone(float u1, float u2, float cosMax) {
 }
 URBIS_HD inline float uniformConePdf(float cosMax) { return 1.0f / (2.0f * kPi * (1.0f - cosMax)); }
 
+/// Direction about +z distributed as the normalised Phong lobe (n + 1) / (2 pi) cos^n(theta).
+URBIS_HD inline Vec3f samplePhongLobe(float u1, float u2, float exponent) {
+    float cosTheta = powf(u1, 1.0f / (exponent + 1.0f));
+    float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
+    float phi = 2.0f * kPi * u2;
+    return {sinTheta * cosf(phi), sinTheta * sinf(phi), cosTheta};
+}
+URBIS_HD inline float phongLobePdf(float cosTheta, float exponent) {
+    return cosTheta > 0.0f ? (exponent + 1.0f) / (2.0f * kPi) * powf(cosTheta, exponent) : 0.0f;
+}
+
 } // namespace urbis

@@ -1,5 +1,5 @@
-// Surface materials (host+device POD). Lambertian only for now; the kind tag leaves room for
-// glossy, mirror and glass without changing the record's users.
+// Surface materials (host+device POD): one record for every kind, a tag and a switch where it is
+// used (integrators/bsdf.h). Any kind may also emit.
 #pragma once
 
 #include "math/vec.h"
@@ -8,11 +8,20 @@
 
 namespace urbis {
 
-enum class MaterialKind : uint32_t { Lambertian };
+enum class MaterialKind : uint32_t {
+    Lambertian,  ///< diffuse: albedo / pi
+    Glossy,      ///< diffuse plus a normalised Phong lobe (Lafortune and Willems 1994)
+    Mirror,      ///< perfect specular reflection, tinted by albedo
+    Glass        ///< thin dielectric pane: Schlick-Fresnel reflection, straight transmission tinted by albedo
+};
 
 struct Material {
-    Vec3f albedo{0.8f, 0.8f, 0.8f};  ///< linear reflectance in [0, 1)
+    Vec3f albedo{0.8f, 0.8f, 0.8f};  ///< linear diffuse reflectance in [0, 1); Mirror: reflectance; Glass: transmittance
     MaterialKind kind = MaterialKind::Lambertian;
+    Vec3f specular{0, 0, 0};         ///< Glossy: reflectance of the lobe; albedo + specular <= 1 per channel
+    float exponent = 1.0f;           ///< Glossy: Phong exponent
+    Vec3f emission{0, 0, 0};         ///< radiance emitted from both sides
+    float ior = 1.5f;                ///< Glass: index of refraction, for Schlick's R0
 };
 
 } // namespace urbis

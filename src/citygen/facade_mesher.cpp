@@ -1,0 +1,76 @@
+#include "citygen/facade_mesher.h"
+
+#include "geometry/wall_parts.h"
+
+namespace urbis {
+
+namespace {
+
+size_t partTriangles(const CellParts& parts) {
+    size_t n = 0;
+    for (int i = 0; i < parts.count; ++i) n += parts.parts[i].axis == kWallPartBox ? 12 : 2;
+    return n;
+}
+
+/// The quad of `p` whose normal is `axis`, in the plane `plane`, as two world triangles.
+void addQuad(const WallRecord& wall, const WallPart& p, int axis, float plane, TriangleMesh& mesh) {
+    const int b = axis == 0 ? 1 : 0, c = axis == 2 ? 1 : 2;
+    auto corner = [&](float x, float y) {
+        float q[3];
+        q[axis] = plane;
+        q[b] = x;
+        q[c] = y;
+        return wall.worldFromWall(q[0], q[1], q[2]);
+    };
+    const Vec3f p00 = corner(p.lo[b], p.lo[c]), p10 = corner(p.hi[b], p.lo[c]);
+    const Vec3f p11 = corner(p.hi[b], p.hi[c]), p01 = corner(p.lo[b], p.hi[c]);
+    TriangleInfo info;
+    info.material = p.material;
+    info.object = wall.object;
+    info.part = uint32_t(p.part);
+    mesh.add({p00, p10, p11}, info);
+    mesh.add({p00, p11, p01}, info);
+}
+
+void addParts(const WallRecord& wall, const CellParts& parts, TriangleMesh& mesh) {
+    for (int i = 0; i < parts.count; ++i) {
+        const WallPart& p = parts.parts[i];
+        if (p.axis != kWallPartBox) {
+            addQuad(wall, p, p.axis, p.lo[p.axis], mesh);
+            continue;
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+            addQuad(wall, p, axis, p.lo[axis], mesh);
+            addQuad(wall, p, axis, p.hi[axis], mesh);
+        }
+    }
+}
+
+} // namespace
+
+size_t wallTwinTriangleCount(const WallRecord& wall) {
+    CellParts margins;
+    marginParts(wall, margins);
+    size_t n = partTriangles(margins);
+    for (uint32_t j = 0; j < wall.floors; ++j)
+        for (uint32_t i = 0; i < wall.slots; ++i) {
+            CellParts cell;
+            cellParts(wall, j, i, CellSide::Both, cell);
+            n += partTriangles(cell);
+        }
+    return n;
+}
+
+void meshWall(const WallRecord& wall, TriangleMesh& mesh) {
+    CellParts margins;
+    marginParts(wall, margins);
+    addParts(wall, margins, mesh);
+    for (uint32_t j = 0; j < wall.floors; ++j)
+        for (uint32_t i = 0; i < wall.slots; ++i) {
+            CellParts cell;
+            cellParts(wall, j, i, CellSide::Both, cell);
+            addParts(wall, cell, mesh);
+        }
+}
+
+} // namespace urbis

@@ -1,0 +1,17 @@
+// The triangle twin of a procedural wall: the same parts the intersector makes on demand, emitted
+// once as stored triangles (the thesis's comparison, and what an export writes) (host).
+#pragma once
+
+#include "citygen/triangle_mesh.h"
+#include "geometry/wall_record.h"
+
+namespace urbis {
+
+/// Triangles meshWall appends for `wall`: two per quad, twelve per box, over the margins and every cell.
+size_t wallTwinTriangleCount(const WallRecord& wall);
+
+/// Appends every part of `wall` (margins and all floors x slots) as world-space triangles, each
+/// tagged with the wall's object and the part's SurfacePart and material.
+void meshWall(const WallRecord& wall, TriangleMesh& mesh);
+
+} // namespace urbis

@@ -1,0 +1,44 @@
+#include "citygen/geometry_modes.h"
+
+#include "model/input_error.h"
+
+#include <sstream>
+
+namespace urbis {
+
+namespace {
+
+Representation parseRepresentation(const std::string& text, const std::string& whole) {
+    if (text == "procedural") return Representation::Procedural;
+    if (text == "triangles") return Representation::Triangles;
+    throw InputError("--geometry: '" + text + "' in '" + whole + "' is neither procedural nor triangles");
+}
+
+} // namespace
+
+GeometryModes parseGeometryModes(const std::string& text) {
+    GeometryModes modes;
+    if (text.find('=') == std::string::npos) {
+        const Representation r = parseRepresentation(text, text);
+        return GeometryModes{r, r};
+    }
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        const size_t eq = item.find('=');
+        if (eq == std::string::npos) throw InputError("--geometry: expected KIND=MODE, got '" + item + "'");
+        const std::string kind = item.substr(0, eq);
+        const Representation r = parseRepresentation(item.substr(eq + 1), text);
+        if (kind == "walls") modes.walls = r;
+        else if (kind == "roofs") modes.roofs = r;
+        else if (kind == "buildings") modes = GeometryModes{r, r};
+        else throw InputError("--geometry: unknown kind '" + kind + "' (kinds: walls, roofs, buildings)");
+    }
+    return modes;
+}
+
+const char* representationName(Representation r) {
+    return r == Representation::Procedural ? "procedural" : "triangles";
+}
+
+} // namespace urbis

@@ -1,0 +1,203 @@
+// Ray/procedural-wall intersection (host+device): the ray is taken into wall coordinates, the wall
+// plane's margins are one plane test, and the floor x slot grid is walked cell by cell along the
+// ray (a 2D DDA, J. Amanatides and A. Woo, "A Fast Voxel Traversal Algorithm for Ray Tracing",
+// Eurographics 1987), testing only the parts of the cells the ray passes through.
+#pragma once
+
+#include "accel/bvh_traverse.h"
+#include "geometry/wall_parts.h"
+#include "math/ray.h"
+
+namespace urbis {
+
+/// A hit on a wall: distance, the wall-space axis of the surface normal, what was hit.
+struct WallHit {
+    float t = 0;
+    uint32_t axis = 0;       ///< 0: along the wall, 1: up, 2: the wall's normal
+    uint32_t material = 0;
+    SurfacePart part = SurfacePart::Facade;
+};
+
+/// Metres by which part extents are widened when tested, so that rounding never lets a ray slip
+/// between two parts that share an edge (the parts overlap by this much instead).
+inline constexpr float kWallPartPadding = 2e-4f;
+
+/// A ray in wall coordinates (the same t as in world space).
+struct WallRay {
+    Vec3f o, d, invD;
+    float tmin;
+
+    URBIS_HD WallRay(const WallRecord& wall, const Ray& ray) : tmin(ray.tmin) {
+        const Vec3f rel = ray.origin - wall.origin;
+        o = {dot(rel, wall.axisU), rel.y, dot(rel, wall.normal)};
+        d = {dot(ray.dir, wall.axisU), ray.dir.y, dot(ray.dir, wall.normal)};
+        invD = {BvhRay::safeInverse(d.x), BvhRay::safeInverse(d.y), BvhRay::safeInverse(d.z)};
+    }
+};
+
+/// The world-space normal of a wall-space axis.
+URBIS_HD inline Vec3f wallAxisNormal(const WallRecord& wall, uint32_t axis) {
+    return axis == 0 ? wall.axisU : (axis == 1 ? Vec3f{0, 1, 0} : wall.normal);
+}
+
+/// Tests one part with tmin < t < tmax; on a hit shrinks tmax and fills `hit`. A box is solid:
+/// a ray from inside hits its exit face.
+URBIS_HD inline bool intersectWallPart(const WallPart& p, const WallRay& r, float& tmax, WallHit& hit) {
+    constexpr float e = kWallPartPadding;
+    if (p.axis != kWallPartBox) {
+        const int a = p.axis, b = a == 0 ? 1 : 0, c = a == 2 ? 1 : 2;
+        if (r.d[a] == 0.0f) return false;
+        const float t = (p.lo[a] - r.o[a]) * r.invD[a];
+        if (!(t > r.tmin && t < tmax)) return false;
+        const float x = r.o[b] + t * r.d[b], y = r.o[c] + t * r.d[c];
+        if (x < p.lo[b] - e || x > p.hi[b] + e || y < p.lo[c] - e || y > p.hi[c] + e) return false;
+        tmax = t;
+        hit = {t, uint32_t(a), p.material, p.part};
+        return true;
+    }
+    float tNear = -3.0e38f, tFar = 3.0e38f;
+    uint32_t nearAxis = 0, farAxis = 0;
+    for (int a = 0; a < 3; ++a) {
+        const float t0 = (p.lo[a] - r.o[a]) * r.invD[a], t1 = (p.hi[a] - r.o[a]) * r.invD[a];
+        const float lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
+        if (lo > tNear) { tNear = lo; nearAxis = uint32_t(a); }
+        if (hi < tFar) { tFar = hi; farAxis = uint32_t(a); }
+    }
+    if (tNear > tFar) return false;
+    const float t = tNear > r.tmin ? tNear : tFar;
+    if (!(t > r.tmin && t < tmax)) return false;
+    tmax = t;
+    hit = {t, t == tNear ? nearAxis : farAxis, p.material, p.part};
+    return true;
+}
+
+/// Tests every part of `parts`; returns whether any was hit (closest in `hit`, tmax shrunk).
+template <bool AnyHit>
+URBIS_HD inline bool intersectWallParts(const CellParts& parts, const WallRay& r, float& tmax, WallHit& hit) {
+    bool found = false;
+    for (int i = 0; i < parts.count; ++i) {
+        if (intersectWallPart(parts.parts[i], r, tmax, hit)) {
+            found = true;
+            if constexpr (AnyHit) return true;
+        }
+    }
+    return found;
+}
+
+/// The margins around the grid: the plane w = 0 where it lies in the wall but not inside the grid.
+URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const WallRay& r, float& tmax, WallHit& hit) {
+    constexpr float e = kWallPartPadding;
+    if (r.d.z == 0.0f) return false;
+    const float t = -r.o.z * r.invD.z;
+    if (!(t > r.tmin && t < tmax)) return false;
+    const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
+    if (u < -e || u > wall.width + e || v < -e || v > wall.height + e) return false;
+    const bool inGrid = u > wall.gridU + e && u < wall.gridU + wall.gridWidth() - e && v > wall.gridV + e &&
+                        v < wall.gridV + wall.gridHeight() - e;
+    if (inGrid) return false;
+    tmax = t;
+    hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
+    return true;
+}
+
+/// The common case of a punched cell without a balcony, for a ray in front of the glass: where the
+/// ray crosses the wall plane inside the cell, it hits the frame around the opening, or passes the
+/// opening and hits the glass if it still lies inside the opening there. Returns false, deciding
+/// nothing, in every other case (the caller then tests the cell's parts).
+URBIS_HD inline bool intersectPunchedFront(const WallRecord& wall, const CellLayout& c, const WallRay& r, float& tmax,
+                                           WallHit& hit) {
+    if (!(r.o.z > 0.0f && r.d.z < 0.0f)) return false;
+    const float t = -r.o.z * r.invD.z;
+    if (!(t > r.tmin && t < tmax)) return false;
+    const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
+    if (u < c.u0 || u > c.u1 || v < c.v0 || v > c.v1) return false;
+    if (u < c.ou0 || u > c.ou1 || v < c.ov0 || v > c.ov1) {
+        tmax = t;
+        hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
+        return true;
+    }
+    const float tg = (-wall.reveal - r.o.z) * r.invD.z;
+    const float ug = r.o.x + tg * r.d.x, vg = r.o.y + tg * r.d.y;
+    if (!(tg < tmax) || ug < c.ou0 || ug > c.ou1 || vg < c.ov0 || vg > c.ov1) return false;
+    tmax = tg;
+    hit = {tg, 2u, wall.facadeMaterials + uint32_t(FacadeMaterial::Glass), SurfacePart::Glass};
+    return true;
+}
+
+/// The closest (AnyHit = false) or any (AnyHit = true) hit of `ray` on `wall` with
+/// ray.tmin < t < ray.tmax. A ray that enters the grid's column in front of the glass plane
+/// (w > -reveal) can reach only the parts in front of it, one that enters behind it only the rooms'
+/// side (CellSide; the parts lie in the column and the glass plane closes it): the slab walked is
+/// then w in [-reveal, depthFront] or [-depthBack, -reveal]. Visits only the cells that
+/// the ray's segment inside that slab passes through, nearest first, and stops at the first cell
+/// with a hit: every part of a cell lies in the cell's column, so nothing later is closer.
+template <bool AnyHit>
+URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit) {
+    const WallRay r(wall, ray);
+    float tmax = ray.tmax;
+    bool found = intersectWallMargins(wall, r, tmax, hit);
+    if (found && AnyHit) return true;
+    if (wall.slots == 0 || wall.floors == 0) return found;
+    // Clip the ray to the grid's column; where it enters the column decides the side of the glass
+    // it can reach (every cell part lies in the column), then clip to that side's slab.
+    constexpr float e = kWallPartPadding;
+    const float lo[2] = {wall.gridU - e, wall.gridV - e};
+    const float hi[2] = {wall.gridU + wall.gridWidth() + e, wall.gridV + wall.gridHeight() + e};
+    float t0 = r.tmin, t1 = tmax;
+    auto clip = [&](float o, float d, float inv, float l, float h) {
+        if (d == 0.0f) {
+            if (o < l || o > h) t0 = 3.0e38f;
+            return;
+        }
+        const float ta = (l - o) * inv, tb = (h - o) * inv;
+        const float near = ta < tb ? ta : tb, far = ta < tb ? tb : ta;
+        t0 = near > t0 ? near : t0;
+        t1 = far < t1 ? far : t1;
+    };
+    clip(r.o.x, r.d.x, r.invD.x, lo[0], hi[0]);
+    clip(r.o.y, r.d.y, r.invD.y, lo[1], hi[1]);
+    if (t0 > t1) return found;
+    const CellSide side = r.o.z + t0 * r.d.z > -wall.reveal ? CellSide::Front : CellSide::Back;
+    if (side == CellSide::Front) clip(r.o.z, r.d.z, r.invD.z, -wall.reveal - e, wall.depthFront + e);
+    else clip(r.o.z, r.d.z, r.invD.z, -wall.depthBack - e, -wall.reveal + e);
+    if (t0 > t1) return found;
+    // The cell of the entry point, and the distances to the next column and row boundaries.
+    const float pu = r.o.x + t0 * r.d.x, pv = r.o.y + t0 * r.d.y;
+    const int slots = wall.slots, floors = wall.floors;
+    int i = int(floorf((pu - wall.gridU) / wall.slotWidth)), j = int(floorf((pv - wall.gridV) / wall.floorHeight));
+    i = i < 0 ? 0 : (i >= slots ? slots - 1 : i);
+    j = j < 0 ? 0 : (j >= floors ? floors - 1 : j);
+    const int stepI = r.d.x > 0.0f ? 1 : -1, stepJ = r.d.y > 0.0f ? 1 : -1;
+    auto nextU = [&](int cell) {
+        if (r.d.x == 0.0f) return 3.0e38f;
+        return (wall.gridU + wall.slotWidth * float(cell + (stepI > 0 ? 1 : 0)) - r.o.x) * r.invD.x;
+    };
+    auto nextV = [&](int cell) {
+        if (r.d.y == 0.0f) return 3.0e38f;
+        return (wall.gridV + wall.floorHeight * float(cell + (stepJ > 0 ? 1 : 0)) - r.o.y) * r.invD.y;
+    };
+    float tu = nextU(i), tv = nextV(j);
+    for (;;) {
+        if (wall.style == WallStyle::Punched && side == CellSide::Front) {
+            const CellLayout c = cellLayout(wall, uint32_t(j), uint32_t(i));
+            if (!c.balcony && intersectPunchedFront(wall, c, r, tmax, hit)) return true;
+        }
+        CellParts parts;
+        cellParts(wall, uint32_t(j), uint32_t(i), side, parts);
+        if (intersectWallParts<AnyHit>(parts, r, tmax, hit)) return true;
+        if (tu < tv) {
+            if (tu > t1 || tu > tmax) break;
+            i += stepI;
+            if (i < 0 || i >= slots) break;
+            tu = nextU(i);
+        } else {
+            if (tv > t1 || tv > tmax) break;
+            j += stepJ;
+            if (j < 0 || j >= floors) break;
+            tv = nextV(j);
+        }
+    }
+    return found;
+}
+
+} // namespace urbis

@@ -1,0 +1,60 @@
+// A procedural wall: one footprint edge of a building, from its minimum height to the wall top,
+// split into a grid of floors x slots (host+device POD). Everything in a cell (window, balcony,
+// shop window, curtain-wall panel) is made from this record and a hash when a ray needs it.
+#pragma once
+
+#include "math/vec.h"
+
+#include <cstdint>
+
+namespace urbis {
+
+/// How a wall's cells are built.
+enum class WallStyle : uint8_t {
+    Punched,   ///< recessed windows in a solid wall; balconies and shop windows by flags
+    Curtain    ///< a glazed curtain wall: glass, mullions and spandrels over the whole grid
+};
+
+/// Optional features of a punched wall.
+enum WallFlags : uint8_t {
+    kWallBalconies = 1,      ///< cells above the ground floor may hold a balcony
+    kWallShopFront = 2       ///< the ground floor may hold shop windows
+};
+
+/// Materials a facade uses besides the building's wall colour, at facadeMaterials + index.
+enum class FacadeMaterial : uint32_t { Glass, RoomDark, RoomLit, Slab, Railing, Mullion, Spandrel, Count };
+
+/// Wall coordinates (metres): u along the wall from its first footprint corner, v up from the wall's
+/// bottom, w along the outward normal (w = 0 is the wall plane, the building's inside is w < 0).
+/// world = origin + axisU * u + (0, 1, 0) * v + normal * w.
+struct WallRecord {
+    Vec3f origin;                ///< world position of (u, v, w) = 0: the first corner at the wall's bottom
+    Vec3f axisU;                 ///< unit, horizontal, along the wall
+    Vec3f normal;                ///< unit, horizontal, outward
+    float width = 0, height = 0; ///< extent in u and v
+    float gridU = 0, gridV = 0;  ///< lower-left corner of the cell grid (the left and bottom margins)
+    float slotWidth = 0, floorHeight = 0;
+    uint16_t slots = 0, floors = 0;
+    float depthFront = 0;        ///< how far parts reach outward (balconies, mullions), >= 0
+    float depthBack = 0;         ///< how far rooms reach inward, > 0
+    float windowWidth = 0;       ///< width of a punched window
+    float windowHeight = 0;      ///< height of a punched window
+    float sillHeight = 0;        ///< from the cell's bottom to the window's bottom
+    float reveal = 0;            ///< depth of the glass behind the wall plane
+    uint32_t object = 0;         ///< the building's object id (building index + 1)
+    uint32_t wallIndex = 0;      ///< which wall of the building
+    uint32_t seed = 0;           ///< the building's seed
+    uint32_t wallMaterial = 0;   ///< the facade's own material (the building's colour)
+    uint32_t facadeMaterials = 0;///< first of FacadeMaterial::Count materials
+    WallStyle style = WallStyle::Punched;
+    uint8_t flags = 0;           ///< WallFlags
+
+    URBIS_HD float gridWidth() const { return slotWidth * float(slots); }
+    URBIS_HD float gridHeight() const { return floorHeight * float(floors); }
+    /// World position of wall coordinates (u, v, w).
+    URBIS_HD Vec3f worldFromWall(float u, float v, float w) const {
+        return origin + axisU * u + Vec3f{0, v, 0} + normal * w;
+    }
+};
+
+} // namespace urbis

@@ -1,0 +1,85 @@
+// Scattering of every material kind (host+device): evaluation for light sampling, and sampling
+// beside its pdf. Directions are unit and point away from the surface; n is the geometric
+// normal on the side of wo.
+#pragma once
+
+#include "math/frame.h"
+#include "math/sampling.h"
+#include "scene/material.h"
+
+namespace urbis {
+
+/// Mirror reflection of `wo` about `n`.
+URBIS_HD inline Vec3f reflect(Vec3f wo, Vec3f n) { return n * (2.0f * dot(wo, n)) - wo; }
+
+/// Whether the material scatters only into single directions: light sampling cannot reach it.
+URBIS_HD inline bool isSpecular(const Material& m) { return m.kind == MaterialKind::Mirror || m.kind == MaterialKind::Glass; }
+
+/// Probability that a Glossy material samples its Phong lobe rather than its diffuse part.
+URBIS_HD inline float glossyLobeChance(const Material& m) {
+    float d = luminance(m.albedo), s = luminance(m.specular);
+    return d + s > 0.0f ? s / (d + s) : 0.0f;
+}
+
+/// f(wo, wi) * cos(wi, n) of a non-specular material; zero below the surface.
+URBIS_HD inline Vec3f evalBsdfCos(const Material& m, Vec3f wo, Vec3f wi, Vec3f n) {
+    float cosine = dot(wi, n);
+    if (cosine <= 0.0f || isSpecular(m)) return {};
+    Vec3f f = m.albedo * (1.0f / kPi);
+    if (m.kind == MaterialKind::Glossy) {
+        float c = fmaxf(0.0f, dot(wi, reflect(wo, n)));
+        f += m.specular * ((m.exponent + 2.0f) / (2.0f * kPi) * powf(c, m.exponent));
+    }
+    return f * cosine;
+}
+
+/// The solid-angle pdf with which sampleBsdf picks `wi` for a non-specular material.
+URBIS_HD inline float bsdfPdf(const Material& m, Vec3f wo, Vec3f wi, Vec3f n) {
+    float cosine = dot(wi, n);
+    if (cosine <= 0.0f || isSpecular(m)) return 0.0f;
+    if (m.kind != MaterialKind::Glossy) return cosineHemispherePdf(cosine);
+    float lobe = glossyLobeChance(m);
+    return (1.0f - lobe) * cosineHemispherePdf(cosine) + lobe * phongLobePdf(dot(wi, reflect(wo, n)), m.exponent);
+}
+
+struct BsdfSample {
+    Vec3f dir;
+    Vec3f weight;          ///< f * cos / pdf, or the specular throughput
+    bool specular = false;
+};
+
+/// Samples a scattered direction from three uniform numbers. Returns false when the path ends
+/// (a glossy sample below the surface).
+URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, float u1, float u2, BsdfSample& s) {
+    switch (m.kind) {
+    case MaterialKind::Mirror:
+        s = {reflect(wo, n), m.albedo, true};
+        return true;
+    case MaterialKind::Glass: {
+        // Schlick's approximation (Schlick 1994) of the Fresnel reflectance; reflect or transmit in
+        // proportion, so each branch's weight is 1 (reflection) or the tint (transmission).
+        float r0 = (m.ior - 1.0f) / (m.ior + 1.0f);
+        r0 *= r0;
+        float c = 1.0f - fminf(1.0f, fabsf(dot(wo, n)));
+        float fresnel = r0 + (1.0f - r0) * c * c * c * c * c;
+        if (u0 < fresnel) s = {reflect(wo, n), Vec3f{1, 1, 1}, true};
+        else s = {-wo, m.albedo, true};
+        return true;
+    }
+    case MaterialKind::Lambertian:
+        // Cosine sampling makes f * cos / pdf equal to the albedo.
+        s = {Frame::fromZ(n).toWorld(sampleCosineHemisphere(u1, u2)), m.albedo, false};
+        return true;
+    case MaterialKind::Glossy: {
+        Vec3f wi = u0 < glossyLobeChance(m) ? Frame::fromZ(reflect(wo, n)).toWorld(samplePhongLobe(u1, u2, m.exponent))
+                                            : Frame::fromZ(n).toWorld(sampleCosineHemisphere(u1, u2));
+        float pdf = bsdfPdf(m, wo, wi, n);
+        if (!(pdf > 0.0f)) return false;
+        s = {wi, evalBsdfCos(m, wo, wi, n) / pdf, false};
+        return true;
+    }
+    }
+    return false;
+}
+
+} // namespace urbis

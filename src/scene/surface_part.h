@@ -1,0 +1,27 @@
+// Which part of an object a surface is: the same tag for a procedural wall's cell part and the
+// twin's triangle made from it, so an ID buffer can compare the two representations.
+#pragma once
+
+#include <cstdint>
+
+namespace urbis {
+
+enum class SurfacePart : uint8_t {
+    Whole,        ///< the ground, or anything not split into parts
+    Roof,
+    Facade,       ///< the wall's outer plane: margins, plain walls and the frame around openings
+    Jamb,         ///< the sides, sill and lintel of a recessed opening
+    Glass,
+    Room,         ///< back, sides, floor and ceiling of the room behind a window
+    BalconySlab,
+    Railing,
+    Mullion,      ///< the frame of a curtain wall
+    Spandrel,     ///< the opaque panel between two floors of a curtain wall
+    Count
+};
+
+/// Bits of a surface ID taken by the part.
+inline constexpr uint32_t kSurfacePartBits = 5;
+static_assert(uint32_t(SurfacePart::Count) <= (1u << kSurfacePartBits), "parts must fit their bits");
+
+} // namespace urbis
