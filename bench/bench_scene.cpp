@@ -22,7 +22,10 @@ std::vector<Triangle> benchTriangles(std::string& description) {
         city = generateCity(params);
         description = "generated city of 100000 buildings (" + path + " not found)";
     }
-    CityMesh mesh = meshCity(city);
+    // Plain walls: Embree traces stored triangles only, so both get the same mass model.
+    CityMeshOptions options;
+    options.facades = false;
+    CityMesh mesh = meshCity(city, options);
     std::vector<Triangle> tris = std::move(mesh.mesh.triangles);
     // The renderer's ground is an analytic plane; Embree needs it as triangles, so both get a quad.
     Bounds3f b = mesh.cityBounds;

@@ -7,12 +7,14 @@
 #
 # Writes one stats JSON per run into out-dir and prints a table (city, target height, mode,
 # mean height, triangles, walls, cells, bytes_scene, seconds_render, rays/s). A twin that does not
-# fit in memory is reported as such (urbis refuses it before building).
+# fit in memory is reported as such (urbis refuses it before building). FACADES_DEVICE=cuda runs
+# both representations on the GPU (default: cpu).
 set -u
 BUILD=${1:-build}
 OUT=${2:-bench/out}
 DATA=${URBIS_DATA:-$(dirname "$0")/../../shared/data}
 SIZE=${FACADES_SIZE:-"--width 640 --height 360 --spp 4"}
+DEVICE=${FACADES_DEVICE:-cpu}
 mkdir -p "$OUT"
 
 # city name | urbis options | camera | native mean height (m) of that city at --height-scale 1
@@ -25,7 +27,7 @@ run() { # name options camera scale target
     for mode in procedural triangles; do
         stats="$OUT/$1_$5m_$mode.json"
         rm -f "$stats"
-        if ! "$BUILD/urbis" render $2 $3 $SIZE --height-scale "$4" --geometry $mode \
+        if ! "$BUILD/urbis" render $2 $3 $SIZE --device "$DEVICE" --height-scale "$4" --geometry $mode \
                 --out "$OUT/$1_$5m_$mode.png" --stats "$stats" 2>"$OUT/$1_$5m_$mode.err"; then
             printf '%-10s %4sm %-10s %s\n' "$1" "$5" "$mode" "$(cat "$OUT/$1_$5m_$mode.err")"
             continue

@@ -36,7 +36,7 @@ void addFacadeMaterials(std::vector<Material>& out) {
     Material glass{Vec3f{0.85f, 0.9f, 0.9f}, MaterialKind::Glass};
     Material roomDark{Vec3f{0.12f, 0.11f, 0.10f}};
     Material roomLit{Vec3f{0.45f, 0.40f, 0.33f}};
-    roomLit.emission = Vec3f{0.9f, 0.7f, 0.45f};
+    roomLit.emission = Vec3f{0.16f, 0.12f, 0.08f};  // indoor light by day: far below sunlit walls
     Material slab{Vec3f{0.5f, 0.5f, 0.48f}};
     Material railing{Vec3f{0.04f, 0.04f, 0.045f}, MaterialKind::Glossy, Vec3f{0.4f, 0.4f, 0.42f}, 60.0f};
     Material mullion{Vec3f{0.1f, 0.1f, 0.11f}, MaterialKind::Glossy, Vec3f{0.35f, 0.35f, 0.37f}, 120.0f};
