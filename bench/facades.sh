@@ -1,7 +1,7 @@
 #!/bin/sh
 # Procedural facades against their triangle twin: frame time and scene memory of both
 # representations, same camera and settings, at mean building heights of about 20, 40 and 80 m
-# (the thesis's Figure 4.9), on San Francisco downtown and on a generated city. CPU only.
+# (the thesis's Figure 4.9), on San Francisco downtown and on a generated city.
 #
 #   bench/facades.sh [build-dir] [out-dir]
 #
