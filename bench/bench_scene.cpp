@@ -24,7 +24,7 @@ std::vector<Triangle> benchTriangles(std::string& description) {
     }
     // Plain walls: Embree traces stored triangles only, so both get the same mass model.
     CityMeshOptions options;
-    options.facades = false;
+    options.geometry.walls = Representation::Plain;
     CityMesh mesh = meshCity(city, options);
     std::vector<Triangle> tris = std::move(mesh.mesh.triangles);
     // The renderer's ground is an analytic plane; Embree needs it as triangles, so both get a quad.

@@ -47,13 +47,16 @@ if [[ $STEPS == *,test,* ]]; then
 fi
 
 if [[ $STEPS == *,bench,* ]]; then
-  say "GPU bench: San Francisco"
-  run "$BUILD"/urbis bench --device cuda --osm "$SF" --json "$OUT/bench_sf${TAG}_cuda.json" || status=1
-  say "GPU bench: San Francisco from street level"
-  run "$BUILD"/urbis bench --device cuda --osm "$SF" --camera-geo -122.397,37.789,300,20,-25 \
-      --json "$OUT/bench_sfstreet${TAG}_cuda.json" || status=1
-  say "GPU bench: generated city, 100k buildings"
-  run "$BUILD"/urbis bench --device cuda --buildings 100000 --json "$OUT/bench_100k${TAG}_cuda.json" || status=1
+  # Each scene twice: procedural facades (the default) and plain walls (stored triangles only).
+  for geometry in procedural plain; do
+    say "GPU bench ($geometry): San Francisco"
+    run "$BUILD"/urbis bench --device cuda --geometry $geometry --osm "$SF" --json "$OUT/bench_sf_${geometry}${TAG}_cuda.json" || status=1
+    say "GPU bench ($geometry): San Francisco from street level"
+    run "$BUILD"/urbis bench --device cuda --geometry $geometry --osm "$SF" --camera-geo -122.397,37.789,300,20,-25 \
+        --json "$OUT/bench_sfstreet_${geometry}${TAG}_cuda.json" || status=1
+    say "GPU bench ($geometry): generated city, 100k buildings"
+    run "$BUILD"/urbis bench --device cuda --geometry $geometry --buildings 100000 --json "$OUT/bench_100k_${geometry}${TAG}_cuda.json" || status=1
+  done
   say "GPU render: San Francisco, 1920x1080, 64 spp"
   if [[ -z $TAG ]]; then
     run "$BUILD"/urbis render --device cuda --osm "$SF" --width 1920 --height 1080 --spp 64 --out "$OUT/sf_gpu.png" \

@@ -1,5 +1,5 @@
 // Traversal parity: a million random rays over a real city give the same triangle and distance
-// on the GPU (intersectClosest / occluded in a kernel) as on the CPU.
+// on the GPU (intersectScene / occludedScene in a kernel: triangles, facade walls, ground) as on the CPU.
 #include "gpu_test_support.h"
 
 #include "citygen/city_mesher.h"
@@ -32,28 +32,30 @@ std::vector<Ray> randomRays(const Bounds3f& b, uint32_t count, uint32_t seed) {
 void expectSameHitsOnGpuAndCpu(const std::string& osmFile, uint32_t count) {
     CityModel city = importOsm(osmFile, ImportOptions{});
     CityMesh mesh = meshCity(city);
-    Scene scene = Scene::build(mesh.mesh, mesh.materials);
+    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls);
+    scene.ground = GroundPlane{0.0f, mesh.groundMaterial, true};
     ASSERT_GT(scene.triangles.size(), 500u);
+    ASSERT_GT(scene.walls.size(), 50u);
     std::vector<Ray> rays = randomRays(mesh.cityBounds, count, 4242u);
 
     std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
-    std::vector<Hit> gpuHits = gpu->intersectClosest(rays);
+    std::vector<SurfaceHit> gpuHits = gpu->intersect(rays);
     std::vector<uint8_t> gpuBlocked = gpu->occluded(rays);
     ASSERT_EQ(gpuHits.size(), rays.size());
     ASSERT_EQ(gpuBlocked.size(), rays.size());
 
     const SceneView view = scene.view();
-    std::vector<Hit> cpuHits(count);
+    std::vector<SurfaceHit> cpuHits(count);
     std::vector<uint8_t> cpuBlocked(count);
     tbb::parallel_for(uint32_t(0), count, [&](uint32_t i) {
-        cpuHits[i] = intersectClosest(view.geometry, rays[i]);
-        cpuBlocked[i] = occluded(view.geometry, rays[i]);
+        cpuHits[i] = intersectScene(view, rays[i]);
+        cpuBlocked[i] = occludedScene(view, rays[i]);
     });
 
     size_t hits = 0, validityDiffers = 0, primDiffers = 0, distanceDiffers = 0, occlusionDiffers = 0, bitEqual = 0;
     for (uint32_t i = 0; i < count; ++i) {
-        const Hit& g = gpuHits[i];
-        const Hit& c = cpuHits[i];
+        const SurfaceHit& g = gpuHits[i];
+        const SurfaceHit& c = cpuHits[i];
         occlusionDiffers += gpuBlocked[i] != cpuBlocked[i];
         if (g.valid() != c.valid()) {
             if (validityDiffers++ < 5) ADD_FAILURE() << "ray " << i << ": hit on one device only";
@@ -61,16 +63,17 @@ void expectSameHitsOnGpuAndCpu(const std::string& osmFile, uint32_t count) {
         }
         if (!c.valid()) continue;
         ++hits;
-        bitEqual += g.prim == c.prim && g.t == c.t;
-        // Two triangles sharing the hit edge are both right at the same distance.
-        if (g.prim != c.prim && std::fabs(g.t - c.t) > 1e-5f * c.t) {
-            if (primDiffers++ < 5) ADD_FAILURE() << "ray " << i << ": triangle " << g.prim << " vs " << c.prim;
+        const bool samePrimitive = g.kind == c.kind && g.object == c.object && g.part == c.part && g.material == c.material;
+        bitEqual += samePrimitive && g.t == c.t;
+        // Two triangles (or parts) sharing the hit edge are both right at the same distance.
+        if (!samePrimitive && std::fabs(g.t - c.t) > 1e-5f * c.t) {
+            if (primDiffers++ < 5) ADD_FAILURE() << "ray " << i << ": object " << g.object << " vs " << c.object;
         }
         if (std::fabs(g.t - c.t) > 1e-5f * c.t) {
             if (distanceDiffers++ < 5) ADD_FAILURE() << "ray " << i << ": t " << g.t << " vs " << c.t;
         }
     }
-    std::printf("%s: %u rays, %zu hits, %zu bit-identical (triangle and distance)\n",
+    std::printf("%s: %u rays, %zu hits, %zu bit-identical (primitive and distance)\n",
                 std::filesystem::path(osmFile).filename().c_str(), count, hits, bitEqual);
     EXPECT_EQ(validityDiffers, 0u);
     EXPECT_EQ(primDiffers, 0u);
@@ -97,8 +100,8 @@ TEST(GpuTraversal, EmptyBatchAndEmptySceneWork) {
     URBIS_SKIP_WITHOUT_GPU();
     Scene scene = Scene::build(TriangleMesh{}, {Material{}});
     std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
-    EXPECT_TRUE(gpu->intersectClosest({}).empty());
-    std::vector<Hit> hits = gpu->intersectClosest({Ray{Vec3f{0, 1, 0}, Vec3f{0, -1, 0}}});
+    EXPECT_TRUE(gpu->intersect({}).empty());
+    std::vector<SurfaceHit> hits = gpu->intersect({Ray{Vec3f{0, 1, 0}, Vec3f{0, -1, 0}}});
     ASSERT_EQ(hits.size(), 1u);
     EXPECT_FALSE(hits[0].valid());
 }

@@ -46,7 +46,7 @@ inline Building roofed(Polygon footprint, RoofShape shape, float minHeight, floa
 /// Mesher options for closed mass models: plain walls instead of facades.
 inline CityMeshOptions massModel() {
     CityMeshOptions options;
-    options.facades = false;
+    options.geometry.walls = Representation::Plain;
     return options;
 }
 

@@ -37,6 +37,7 @@ void addBenchCommand(CLI::App& app, BenchOptions& o) {
     cmd->add_option("--sun", r.sun, "ELEVATION,AZIMUTH of the sun in degrees")->capture_default_str();
     cmd->add_option("--camera", r.camera, "X,Y,Z,TX,TY,TZ: position and target in world metres");
     cmd->add_option("--camera-geo", r.cameraGeo, "LON,LAT,ALTITUDE,HEADING,PITCH (OSM only)");
+    cmd->add_option("--geometry", r.geometry, "procedural (facades), triangles (their twin) or plain (no facades)")->capture_default_str();
     cmd->add_option("--threads", r.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
     cmd->add_option("--repeats", o.repeats, "Timed runs per measurement (0: 20 on the GPU, 3 on the CPU)")->check(CLI::Range(0, 10000))->capture_default_str();
     cmd->add_option("--warmup", o.warmup, "Untimed runs first (GPU)")->check(CLI::Range(0, 1000))->capture_default_str();
@@ -52,7 +53,7 @@ using Clock = std::chrono::steady_clock;
 /// (where the sun is above the surface), as the path tracer would trace them.
 struct RayBatches {
     std::vector<Ray> primary, diffuse, shadow;
-    size_t primaryTriangleHits = 0;
+    size_t primaryBuildingHits = 0;
 };
 
 RayBatches makeRays(const Scene& scene, const Camera& camera, const RenderSettings& settings) {
@@ -61,7 +62,7 @@ RayBatches makeRays(const Scene& scene, const Camera& camera, const RenderSettin
     const size_t n = size_t(w) * h;
     b.primary.resize(n);
     std::vector<Ray> diffuse(n), shadow(n);
-    std::vector<uint8_t> hasDiffuse(n, 0), hasShadow(n, 0), hitTriangle(n, 0);
+    std::vector<uint8_t> hasDiffuse(n, 0), hasShadow(n, 0), hitBuilding(n, 0);
     const SceneView view = scene.view();
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& range) {
         for (size_t i = range.begin(); i < range.end(); ++i) {
@@ -70,7 +71,7 @@ RayBatches makeRays(const Scene& scene, const Camera& camera, const RenderSettin
             b.primary[i] = ray;
             SurfaceHit hit = intersectScene(view, ray);
             if (!hit.valid()) continue;
-            hitTriangle[i] = hit.kind == SurfaceKind::Triangle;
+            hitBuilding[i] = hit.kind != SurfaceKind::Ground;
             Vec3f origin = offsetRayOrigin(ray.origin + ray.dir * hit.t, hit.normal);
             SampleStream rng{settings.seed, uint32_t(i), 0, 16};
             float u1 = rng.draw(), u2 = rng.draw(), u3 = rng.draw(), u4 = rng.draw();
@@ -86,7 +87,7 @@ RayBatches makeRays(const Scene& scene, const Camera& camera, const RenderSettin
     for (size_t i = 0; i < n; ++i) {
         if (hasDiffuse[i]) b.diffuse.push_back(diffuse[i]);
         if (hasShadow[i]) b.shadow.push_back(shadow[i]);
-        b.primaryTriangleHits += hitTriangle[i];
+        b.primaryBuildingHits += hitBuilding[i];
     }
     return b;
 }
@@ -112,15 +113,15 @@ std::vector<float> timeCpu(int repeats, Work&& work) {
 
 std::vector<float> timeCpuTrace(const Scene& scene, const std::vector<Ray>& rays, bool shadow, int repeats) {
     const SceneView view = scene.view();
-    std::vector<Hit> hits(rays.size());
+    std::vector<SurfaceHit> hits(rays.size());
     std::vector<uint8_t> blocked(rays.size());
     return timeCpu(repeats, [&] {
         tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
             for (size_t i = r.begin(); i < r.end(); ++i) {
                 if (shadow)
-                    blocked[i] = occluded(view.geometry, rays[i]);
+                    blocked[i] = occludedScene(view, rays[i]);
                 else
-                    hits[i] = intersectClosest(view.geometry, rays[i]);
+                    hits[i] = intersectScene(view, rays[i]);
             }
         });
     });
@@ -169,7 +170,7 @@ void runBench(const BenchOptions& o) {
     RenderSettings frame = r.settings;
     GpuMemory memory;
     if (onGpu) {
-        size_t extra = batches.primary.size() * (sizeof(Ray) + sizeof(Hit)) +
+        size_t extra = batches.primary.size() * (sizeof(Ray) + sizeof(SurfaceHit)) +
                        size_t(frame.width) * frame.height * sizeof(Vec3f);
         std::unique_ptr<GpuScene> g = GpuScene::upload(scene, extra);
         for (int k = 0; k < 3; ++k) rows[k].ms = g->timeTrace(*batch[k], k == 2, o.warmup, repeats);
@@ -185,11 +186,11 @@ void runBench(const BenchOptions& o) {
                 scene.triangles.size(), scene.nodes.size(), deviceName.c_str(), device.c_str());
     std::printf("%-28s %10s %11s %11s %14s\n", "measurement", "rays", "median ms", "min ms", "rays/s");
     nlohmann::json json = {{"source", prepared.city.source}, {"buildings", prepared.city.buildings.size()},
-                           {"triangles", scene.triangles.size()}, {"bvh_nodes", scene.nodes.size()},
+                           {"triangles", scene.triangles.size()}, {"walls", scene.walls.size()}, {"bvh_nodes", scene.nodes.size()},
                            {"device", device}, {"device_name", deviceName}, {"repeats", repeats},
                            {"warmup", onGpu ? o.warmup : 0}, {"width", frame.width}, {"height", frame.height},
-                           {"primary_triangle_hit_fraction",
-                            double(batches.primaryTriangleHits) / double(std::max<size_t>(1, batches.primary.size()))}};
+                           {"primary_building_hit_fraction",
+                            double(batches.primaryBuildingHits) / double(std::max<size_t>(1, batches.primary.size()))}};
     for (const Row& row : rows) {
         double med = median(row.ms);
         double best = row.ms.empty() ? 0.0 : *std::min_element(row.ms.begin(), row.ms.end());

@@ -46,7 +46,7 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     cmd->add_option("--rr-depth", o.settings.rrDepth, "Depth where Russian roulette starts")->check(CLI::Range(1, 1000))->capture_default_str();
     cmd->add_option("--rr-survival", o.settings.rrSurvival, "Largest survival probability of Russian roulette")->check(CLI::Range(0.01, 1.0))->capture_default_str();
     cmd->add_option("--geometry", o.geometry,
-                    "procedural|triangles for every kind, or KIND=MODE,... (kinds: walls, roofs, buildings)")
+                    "procedural|triangles|plain for every kind, or KIND=MODE,... (kinds: walls, roofs, buildings); plain: no facades")
         ->capture_default_str();
     cmd->add_option("--height-scale", o.heightScale, "Multiply every building's height (and min height)")
         ->check(CLI::Range(0.05, 50.0))

@@ -111,7 +111,7 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
         Chunk& chunk = chunks[c];
         size_t end = std::min(city.buildings.size(), (c + 1) * kChunk);
         for (size_t i = c * kChunk; i < end; ++i)
-            if (!meshBuilding(geos, city.buildings[i], wallInfo[i], roofInfo[i], options.facades ? &facades[i] : nullptr,
+            if (!meshBuilding(geos, city.buildings[i], wallInfo[i], roofInfo[i], options.geometry.walls != Representation::Plain ? &facades[i] : nullptr,
                               chunk.mesh, chunk.walls,
                               chunk.counts))
                 ++chunk.failed;

@@ -15,10 +15,7 @@
 namespace urbis {
 
 struct CityMeshOptions {
-    GeometryModes geometry;
-    /// false: every wall is a plain quad of two triangles, so each building is a closed mass
-    /// model (its triangles share every edge); the roof tests rely on that.
-    bool facades = true;
+    GeometryModes geometry;   ///< walls=plain: each building a closed mass model (every edge shared)
     /// Bytes the triangle twin may take to build; 0: the memory available now.
     size_t memoryLimit = 0;
 };

@@ -11,7 +11,8 @@ namespace {
 Representation parseRepresentation(const std::string& text, const std::string& whole) {
     if (text == "procedural") return Representation::Procedural;
     if (text == "triangles") return Representation::Triangles;
-    throw InputError("--geometry: '" + text + "' in '" + whole + "' is neither procedural nor triangles");
+    if (text == "plain") return Representation::Plain;
+    throw InputError("--geometry: '" + text + "' in '" + whole + "' is not procedural, triangles or plain");
 }
 
 } // namespace
@@ -38,7 +39,12 @@ GeometryModes parseGeometryModes(const std::string& text) {
 }
 
 const char* representationName(Representation r) {
-    return r == Representation::Procedural ? "procedural" : "triangles";
+    switch (r) {
+    case Representation::Procedural: return "procedural";
+    case Representation::Triangles: return "triangles";
+    case Representation::Plain: return "plain";
+    }
+    return "?";
 }
 
 } // namespace urbis

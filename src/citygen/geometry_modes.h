@@ -6,7 +6,9 @@
 
 namespace urbis {
 
-enum class Representation : unsigned char { Procedural, Triangles };
+/// Plain: no facade at all, each wall a quad of two triangles (a closed mass model: fast previews,
+/// and the stored-triangle scenes that other ray tracers can be compared on).
+enum class Representation : unsigned char { Procedural, Triangles, Plain };
 
 /// One representation per kind. Roofs are stored triangles until procedural roofs exist; the
 /// choice is kept so that they can follow it then.
@@ -15,12 +17,12 @@ struct GeometryModes {
     Representation roofs = Representation::Procedural;
 };
 
-/// Parses `--geometry`: "procedural" or "triangles" for every kind, or a list of KIND=MODE
+/// Parses `--geometry`: "procedural", "triangles" or "plain" for every kind, or a list of KIND=MODE
 /// ("walls=triangles,roofs=procedural"; kinds: walls, roofs; also buildings=MODE for both) over
 /// the procedural default. Throws InputError naming the option on anything else.
 GeometryModes parseGeometryModes(const std::string& text);
 
-/// "procedural" or "triangles".
+/// "procedural", "triangles" or "plain".
 const char* representationName(Representation r);
 
 } // namespace urbis

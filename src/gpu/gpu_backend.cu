@@ -38,16 +38,16 @@ __global__ void __launch_bounds__(kTileX * kTileY) renderKernel(SceneView scene,
     if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && total > 0) atomicAdd(rayCount, total);
 }
 
-__global__ void __launch_bounds__(kTraceBlock) closestKernel(TriangleSceneView geometry, const Ray* rays, Hit* hits,
+__global__ void __launch_bounds__(kTraceBlock) closestKernel(SceneView scene, const Ray* rays, SurfaceHit* hits,
                                                             uint32_t count) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i < count) hits[i] = intersectClosest(geometry, rays[i]);
+    if (i < count) hits[i] = intersectScene(scene, rays[i]);
 }
 
-__global__ void __launch_bounds__(kTraceBlock) occludedKernel(TriangleSceneView geometry, const Ray* rays,
-                                                             uint8_t* blocked, uint32_t count) {
+__global__ void __launch_bounds__(kTraceBlock) occludedKernel(SceneView scene, const Ray* rays, uint8_t* blocked,
+                                                             uint32_t count) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i < count) blocked[i] = occluded(geometry, rays[i]) ? 1 : 0;
+    if (i < count) blocked[i] = occludedScene(scene, rays[i]) ? 1 : 0;
 }
 
 /// Launches check the launch itself at once and the kernel's run at the next synchronisation.
@@ -134,7 +134,7 @@ struct GpuScene::Impl {
     DeviceScene scene;
     DeviceBuffer<Vec3f> film;
     DeviceBuffer<Ray> rays;
-    DeviceBuffer<Hit> hits;
+    DeviceBuffer<SurfaceHit> hits;
     DeviceBuffer<uint8_t> blocked;
     DeviceBuffer<unsigned long long> rayCount{1};
 
@@ -153,11 +153,11 @@ struct GpuScene::Impl {
         if (n == 0) return;
         if (shadow) {
             blocked.resize(n);
-            occludedKernel<<<blocksFor(n), kTraceBlock>>>(scene.view().geometry, rays.data(), blocked.data(), n);
+            occludedKernel<<<blocksFor(n), kTraceBlock>>>(scene.view(), rays.data(), blocked.data(), n);
             checkLaunch("occludedKernel");
         } else {
             hits.resize(n);
-            closestKernel<<<blocksFor(n), kTraceBlock>>>(scene.view().geometry, rays.data(), hits.data(), n);
+            closestKernel<<<blocksFor(n), kTraceBlock>>>(scene.view(), rays.data(), hits.data(), n);
             checkLaunch("closestKernel");
         }
     }
@@ -200,11 +200,11 @@ LinearImage GpuScene::render(const Camera& camera, const RenderSettings& setting
     return LinearImage{settings.width, settings.height, m.film.download()};
 }
 
-std::vector<Hit> GpuScene::intersectClosest(const std::vector<Ray>& rays) {
+std::vector<SurfaceHit> GpuScene::intersect(const std::vector<Ray>& rays) {
     impl_->rays.upload(rays);
     impl_->launchTrace(false);
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());
-    return rays.empty() ? std::vector<Hit>{} : impl_->hits.download();
+    return rays.empty() ? std::vector<SurfaceHit>{} : impl_->hits.download();
 }
 
 std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>& rays) {
@@ -216,7 +216,7 @@ std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>& rays) {
 
 std::vector<float> GpuScene::timeTrace(const std::vector<Ray>& rays, bool shadow, int warmup, int repeats) {
     Impl& m = *impl_;
-    m.requireFree(rays.size() * (sizeof(Ray) + sizeof(Hit)), "the ray batch");
+    m.requireFree(rays.size() * (sizeof(Ray) + sizeof(SurfaceHit)), "the ray batch");
     m.rays.upload(rays);
     for (int i = 0; i < warmup; ++i) m.launchTrace(shadow);
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());

@@ -8,6 +8,7 @@
 #include "math/ray.h"
 #include "scene/camera.h"
 #include "scene/render_settings.h"
+#include "geometry/scene_intersect.h"
 #include "scene/scene.h"
 
 #include <cstddef>
@@ -52,9 +53,9 @@ public:
     /// in sample order; counters.seconds is the kernel's time (CUDA events).
     LinearImage render(const Camera& camera, const RenderSettings& settings, RenderCounters& counters);
 
-    /// Closest triangle hit (intersectClosest over the triangle BVH) of every ray.
-    std::vector<Hit> intersectClosest(const std::vector<Ray>& rays);
-    /// Whether each ray is blocked by a triangle (occluded over the triangle BVH); 1 or 0.
+    /// The closest surface (intersectScene: every primitive kind and the ground) of every ray.
+    std::vector<SurfaceHit> intersect(const std::vector<Ray>& rays);
+    /// Whether each ray is blocked by anything (occludedScene); 1 or 0.
     std::vector<uint8_t> occluded(const std::vector<Ray>& rays);
 
     /// Kernel times in milliseconds of `repeats` launches tracing `rays` (closest hit, or

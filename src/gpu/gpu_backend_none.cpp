@@ -25,7 +25,7 @@ GpuScene::GpuScene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 GpuScene::~GpuScene() = default;
 std::unique_ptr<GpuScene> GpuScene::upload(const Scene&, size_t) { noCuda(); }
 LinearImage GpuScene::render(const Camera&, const RenderSettings&, RenderCounters&) { noCuda(); }
-std::vector<Hit> GpuScene::intersectClosest(const std::vector<Ray>&) { noCuda(); }
+std::vector<SurfaceHit> GpuScene::intersect(const std::vector<Ray>&) { noCuda(); }
 std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>&) { noCuda(); }
 std::vector<float> GpuScene::timeTrace(const std::vector<Ray>&, bool, int, int) { noCuda(); }
 std::vector<float> GpuScene::timeRender(const Camera&, const RenderSettings&, int, int) { noCuda(); }
