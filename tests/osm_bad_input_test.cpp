@@ -2,6 +2,8 @@
 #include "model/input_error.h"
 #include "osm/osm_import.h"
 
+#include "process_scratch_dir.h"
+
 #include <gtest/gtest.h>
 #include <osmium/io/any_input.hpp>
 #include <osmium/io/any_output.hpp>
@@ -20,24 +22,9 @@ namespace {
 
 const std::string kVillage = URBIS_OSMNX_DATA "/planet_10.068,48.135_10.071,48.137.osm";
 
-/// A directory of this test process under the test temp dir, removed at exit.
-const std::filesystem::path& scratchDir() {
-    struct Dir {
-        std::filesystem::path path;
-        ~Dir() {
-            std::error_code ec;
-            std::filesystem::remove_all(path, ec);
-        }
-    };
-    static const Dir dir{[] {
-        const auto path = std::filesystem::path(testing::TempDir()) / ("urbis-osm-" + std::to_string(getpid()));
-        std::filesystem::create_directories(path);
-        return path;
-    }()};
-    return dir.path;
-}
+using test::processScratchDir;
 
-std::string tempPath(const std::string& name) { return (scratchDir() / name).string(); }
+std::string tempPath(const std::string& name) { return (processScratchDir() / name).string(); }
 
 std::string writeBytes(const std::string& name, const std::string& bytes) {
     const std::string path = tempPath(name);

@@ -3,6 +3,8 @@
 #include "osm/osm_import.h"
 #include "osm/polygon_ops.h"
 
+#include "process_scratch_dir.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,27 +19,12 @@ using namespace urbis;
 
 namespace {
 
-/// A directory of this test process under the test temp dir, removed at exit.
-const std::filesystem::path& scratchDir() {
-    struct Dir {
-        std::filesystem::path path;
-        ~Dir() {
-            std::error_code ec;
-            std::filesystem::remove_all(path, ec);
-        }
-    };
-    static const Dir dir{[] {
-        const auto path = std::filesystem::path(testing::TempDir()) / ("urbis-osm-" + std::to_string(getpid()));
-        std::filesystem::create_directories(path);
-        return path;
-    }()};
-    return dir.path;
-}
+using test::processScratchDir;
 
 /// Writes `body` (nodes, ways, relations) into an .osm file under the test temp dir,
 /// with a <bounds> box of about 220 x 220 m at lon 10.0, lat 50.0.
 std::string writeOsm(const std::string& name, const std::string& body) {
-    const std::filesystem::path path = scratchDir() / name;
+    const std::filesystem::path path = processScratchDir() / name;
     std::ofstream(path) << "<?xml version='1.0' encoding='UTF-8'?>\n<osm version='0.6' generator='test'>\n"
                         << "<bounds minlat='50.0' minlon='10.0' maxlat='50.002' maxlon='10.003'/>\n"
                         << body << "</osm>\n";
