@@ -6,15 +6,20 @@
 #   bench/facades.sh [build-dir] [out-dir]
 #
 # Writes one stats JSON per run into out-dir and prints a table (city, target height, mode,
-# mean height, triangles, walls, cells, bytes_scene, seconds_render, rays/s). A twin that does not
+# mean height, triangles, walls, wall tiles (BVH primitives), cells, bytes_scene, seconds_render, rays/s). A twin that does not
 # fit in memory is reported as such (urbis refuses it before building). FACADES_DEVICE=cuda runs
-# both representations on the GPU (default: cpu).
+# both representations on the GPU (default: cpu). FACADES_MODES="procedural" runs only that
+# representation (default: "procedural triangles"); FACADES_CITIES="generated" only that city;
+# FACADES_EXTRA is added to every urbis command (e.g. "--wall-tiles 4x4").
 set -u
 BUILD=${1:-build}
 OUT=${2:-bench/out}
 DATA=${URBIS_DATA:-$(dirname "$0")/../../shared/data}
 SIZE=${FACADES_SIZE:-"--width 640 --height 360 --spp 4"}
 DEVICE=${FACADES_DEVICE:-cpu}
+MODES=${FACADES_MODES:-"procedural triangles"}
+CITIES=${FACADES_CITIES:-"sf generated"}
+EXTRA=${FACADES_EXTRA:-}
 mkdir -p "$OUT"
 
 # city name | urbis options | camera | native mean height (m) of that city at --height-scale 1
@@ -24,10 +29,11 @@ GEN="--buildings 3000 --seed 7 --building-height-range 10:30"
 GEN_CAMERA="--camera -300,40,300,0,20,0"
 
 run() { # name options camera scale target
-    for mode in procedural triangles; do
+    case " $CITIES " in *" $1 "*) ;; *) return ;; esac
+    for mode in $MODES; do
         stats="$OUT/$1_$5m_$mode.json"
         rm -f "$stats"
-        if ! "$BUILD/urbis" render $2 $3 $SIZE --device "$DEVICE" --height-scale "$4" --geometry $mode \
+        if ! "$BUILD/urbis" render $2 $3 $SIZE --device "$DEVICE" --height-scale "$4" --geometry $mode $EXTRA \
                 --out "$OUT/$1_$5m_$mode.png" --stats "$stats" 2>"$OUT/$1_$5m_$mode.err"; then
             printf '%-10s %4sm %-10s %s\n' "$1" "$5" "$mode" "$(cat "$OUT/$1_$5m_$mode.err")"
             continue
@@ -36,7 +42,7 @@ run() { # name options camera scale target
 import json, sys
 s = json.load(open(sys.argv[1]))
 print(f"{sys.argv[2]:<10} {sys.argv[3]:>4}m {sys.argv[4]:<10} mean {s['counts']['mean_building_height']:6.1f} m  "
-      f"tris {s['triangles']:>11,}  walls {s['walls']:>7,}  cells {s['facade_cells']:>10,}  "
+      f"tris {s['triangles']:>11,}  walls {s['walls']:>7,}  tiles {s.get('wall_tiles', s['walls']):>7,}  cells {s['facade_cells']:>10,}  "
       f"bytes {s['bytes_scene']:>14,}  render {s['seconds_render']:8.3f} s  bvh {s['seconds']['bvh']:7.2f} s  "
       f"{s['rays_per_second'] / 1e6:6.2f} Mrays/s")
 PY

@@ -17,6 +17,7 @@
 #include <tbb/info.h>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <cstdio>
 #include <unistd.h>
@@ -50,6 +51,9 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
         ->capture_default_str();
     cmd->add_option("--height-scale", o.heightScale, "Multiply every building's height (and min height)")
         ->check(CLI::Range(0.05, 50.0))
+        ->capture_default_str();
+    cmd->add_option("--wall-tiles", o.wallTiles,
+                    "whole, or SLOTSxFLOORS: split each procedural wall into BVH tiles of at most that many cells")
         ->capture_default_str();
     cmd->add_option("--stats", o.statsFile, "Write counts, memory, timings and rays/s as JSON");
     cmd->add_option("--device", o.device, "auto (the GPU if usable, else the CPU), cpu or cuda")
@@ -140,6 +144,17 @@ nlohmann::json countsJson(const CityModel& city) {
             {"areas", city.areas.size()}};
 }
 
+/// --wall-tiles as a tile size ({0, 0}: whole walls).
+WallTileSize wallTileSize(const std::string& text) {
+    if (text == "whole") return {};
+    WallTileSize size;
+    char x = 0, rest = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &size.slots, &x, &size.floors, &rest) != 3 || x != 'x' ||
+        size.slots < 1 || size.floors < 1 || size.slots > 0xffff || size.floors > 0xffff)
+        throw InputError("--wall-tiles: need 'whole' or SLOTSxFLOORS (e.g. 4x4), got '" + text + "'");
+    return size;
+}
+
 } // namespace
 
 PreparedScene prepareScene(const RenderOptions& o) {
@@ -157,7 +172,7 @@ PreparedScene prepareScene(const RenderOptions& o) {
     p.secondsCitygen = secondsSince(t0);
 
     t0 = Clock::now();
-    p.scene = Scene::build(p.mesh.mesh, p.mesh.materials, p.mesh.walls);
+    p.scene = Scene::build(p.mesh.mesh, p.mesh.materials, p.mesh.walls, wallTileSize(o.wallTiles));
     p.scene.ground = GroundPlane{0.0f, p.mesh.groundMaterial, true};
     p.scene.sun = sun;
     p.secondsBvh = secondsSince(t0);
@@ -171,6 +186,7 @@ void runRender(const RenderOptions& o) {
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
     daySun(o);   // fail on a bad --sun or --geometry before any work
     parseGeometryModes(o.geometry);
+    wallTileSize(o.wallTiles);
     checkOutputFolder(o.outFile);
     checkOutputFolder(o.statsFile);
 
@@ -202,7 +218,9 @@ void runRender(const RenderOptions& o) {
         {"geometry", {{"walls", representationName(parseGeometryModes(o.geometry).walls)},
                       // Procedural roofs are not written yet: roofs are stored triangles in both modes.
                       {"roofs", representationName(Representation::Triangles)}}},
-        {"walls", scene.walls.size()},
+        {"walls", scene.walls.empty() ? size_t(0) : cityMesh.facadeWalls},
+        {"wall_tiles", scene.walls.size()},
+        {"wall_tile_size", o.wallTiles},
         {"facade_walls", cityMesh.facadeWalls},
         {"facade_cells", cityMesh.facadeCells},
         {"bvh_nodes", scene.nodes.size()},

@@ -32,6 +32,7 @@ struct RenderOptions {
     std::string device = "auto";      ///< "auto", "cpu" or "cuda"
     std::string geometry = "procedural";  ///< --geometry: representation per kind (see parseGeometryModes)
     float heightScale = 1.0f;             ///< multiplies every building's height (benchmarks of tall cities)
+    std::string wallTiles = "whole";      ///< --wall-tiles: "whole" or "SLOTSxFLOORS" (splitWallsIntoTiles)
 };
 
 /// A city loaded (or generated), meshed and turned into a scene with its BVH, ground and sun,

@@ -84,14 +84,33 @@ URBIS_HD inline bool intersectWallParts(const CellParts& parts, const WallRay& r
     return found;
 }
 
-/// The margins around the grid: the plane w = 0 where it lies in the wall but not inside the grid.
+/// An `Out` for cellParts that tests each part as it is made, in the same order as
+/// intersectWallParts over the list would (so the same hit), without storing the list.
+template <bool AnyHit>
+struct WallPartTester {
+    const WallRay& r;
+    float& tmax;
+    WallHit& hit;
+    bool found = false;
+
+    URBIS_HD void addQuad(uint8_t axis, Vec3f lo, Vec3f hi, SurfacePart part, uint32_t material) {
+        if (AnyHit && found) return;
+        found |= intersectWallPart(WallPart{lo, hi, axis, part, material}, r, tmax, hit);
+    }
+    URBIS_HD void addBox(Vec3f lo, Vec3f hi, SurfacePart part, uint32_t material) {
+        addQuad(kWallPartBox, lo, hi, part, material);
+    }
+};
+
+/// The margins around the grid: the plane w = 0 where it lies in the wall (in the record's tile:
+/// see WallRecord::slot0) but not inside the grid.
 URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const WallRay& r, float& tmax, WallHit& hit) {
     constexpr float e = kWallPartPadding;
     if (r.d.z == 0.0f) return false;
     const float t = -r.o.z * r.invD.z;
     if (!(t > r.tmin && t < tmax)) return false;
     const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
-    if (u < -e || u > wall.width + e || v < -e || v > wall.height + e) return false;
+    if (u < wall.tileU0() - e || u > wall.tileU1() + e || v < wall.tileV0() - e || v > wall.tileV1() + e) return false;
     const bool inGrid = u > wall.gridU + e && u < wall.gridU + wall.gridWidth() - e && v > wall.gridV + e &&
                         v < wall.gridV + wall.gridHeight() - e;
     if (inGrid) return false;
@@ -124,25 +143,29 @@ URBIS_HD inline bool intersectPunchedFront(const WallRecord& wall, const CellLay
     return true;
 }
 
-/// The closest (AnyHit = false) or any (AnyHit = true) hit of `ray` on `wall` with
-/// ray.tmin < t < ray.tmax. A ray that enters the grid's column in front of the glass plane
-/// (w > -reveal) can reach only the parts in front of it, one that enters behind it only the rooms'
-/// side (CellSide; the parts lie in the column and the glass plane closes it): the slab walked is
-/// then w in [-reveal, depthFront] or [-depthBack, -reveal]. Visits only the cells that
-/// the ray's segment inside that slab passes through, nearest first, and stops at the first cell
-/// with a hit: every part of a cell lies in the cell's column, so nothing later is closer.
+/// The closest (AnyHit = false) or any (AnyHit = true) hit of `ray` on `wall` (on its tile: see
+/// WallRecord::slot0) with ray.tmin < t < ray.tmax. A ray that enters the tile's column in front of
+/// the glass plane (w > -reveal) can reach only the parts in front of it, one that enters behind it
+/// only the rooms' side (CellSide; the parts lie in the column and the glass plane closes it): the
+/// slab walked is then w in [-reveal, depthFront] or [-depthBack, -reveal]. Visits only the cells
+/// that the ray's segment inside that slab passes through, nearest first, and stops at the first
+/// cell with a hit: every part of a cell lies in the cell's column, so nothing later is closer.
+/// A tile walks the same cells of the same grid as its whole wall, minus those outside it, so the
+/// closest hit over a wall's tiles is the whole wall's.
 template <bool AnyHit>
 URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit) {
     const WallRay r(wall, ray);
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, r, tmax, hit);
     if (found && AnyHit) return true;
-    if (wall.slots == 0 || wall.floors == 0) return found;
-    // Clip the ray to the grid's column; where it enters the column decides the side of the glass
+    const int slot0 = wall.slot0, slotEnd = wall.tileSlotEnd(), floor0 = wall.floor0, floorEnd = wall.tileFloorEnd();
+    if (slot0 >= slotEnd || floor0 >= floorEnd) return found;
+    // Clip the ray to the tile's column; where it enters the column decides the side of the glass
     // it can reach (every cell part lies in the column), then clip to that side's slab.
     constexpr float e = kWallPartPadding;
-    const float lo[2] = {wall.gridU - e, wall.gridV - e};
-    const float hi[2] = {wall.gridU + wall.gridWidth() + e, wall.gridV + wall.gridHeight() + e};
+    const float lo[2] = {wall.gridU + wall.slotWidth * float(slot0) - e, wall.gridV + wall.floorHeight * float(floor0) - e};
+    const float hi[2] = {wall.gridU + wall.slotWidth * float(slotEnd) + e,
+                         wall.gridV + wall.floorHeight * float(floorEnd) + e};
     float t0 = r.tmin, t1 = tmax;
     auto clip = [&](float o, float d, float inv, float l, float h) {
         if (d == 0.0f) {
@@ -163,10 +186,9 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     if (t0 > t1) return found;
     // The cell of the entry point, and the distances to the next column and row boundaries.
     const float pu = r.o.x + t0 * r.d.x, pv = r.o.y + t0 * r.d.y;
-    const int slots = wall.slots, floors = wall.floors;
     int i = int(floorf((pu - wall.gridU) / wall.slotWidth)), j = int(floorf((pv - wall.gridV) / wall.floorHeight));
-    i = i < 0 ? 0 : (i >= slots ? slots - 1 : i);
-    j = j < 0 ? 0 : (j >= floors ? floors - 1 : j);
+    i = i < slot0 ? slot0 : (i >= slotEnd ? slotEnd - 1 : i);
+    j = j < floor0 ? floor0 : (j >= floorEnd ? floorEnd - 1 : j);
     const int stepI = r.d.x > 0.0f ? 1 : -1, stepJ = r.d.y > 0.0f ? 1 : -1;
     auto nextU = [&](int cell) {
         if (r.d.x == 0.0f) return 3.0e38f;
@@ -178,22 +200,22 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     };
     float tu = nextU(i), tv = nextV(j);
     for (;;) {
-        if (wall.style == WallStyle::Punched && side == CellSide::Front) {
-            const CellLayout c = cellLayout(wall, uint32_t(j), uint32_t(i));
-            if (!c.balcony && intersectPunchedFront(wall, c, r, tmax, hit)) return true;
-        }
-        CellParts parts;
-        cellParts(wall, uint32_t(j), uint32_t(i), side, parts);
-        if (intersectWallParts<AnyHit>(parts, r, tmax, hit)) return true;
+        const CellLayout c = cellLayout(wall, uint32_t(j), uint32_t(i));
+        if (wall.style == WallStyle::Punched && side == CellSide::Front && !c.balcony &&
+            intersectPunchedFront(wall, c, r, tmax, hit))
+            return true;
+        WallPartTester<AnyHit> parts{r, tmax, hit};
+        cellParts(wall, c, side, parts);
+        if (parts.found) return true;
         if (tu < tv) {
             if (tu > t1 || tu > tmax) break;
             i += stepI;
-            if (i < 0 || i >= slots) break;
+            if (i < slot0 || i >= slotEnd) break;
             tu = nextU(i);
         } else {
             if (tv > t1 || tv > tmax) break;
             j += stepJ;
-            if (j < 0 || j >= floors) break;
+            if (j < floor0 || j >= floorEnd) break;
             tv = nextV(j);
         }
     }

@@ -34,7 +34,9 @@ inline constexpr float kShopWindowChance = 0.8f;
 /// mullions), a ray behind it only those behind (room with its front wall, glass, mullions).
 enum class CellSide : uint8_t { Both, Front, Back };
 
-/// Fixed-size list of parts.
+/// Fixed-size list of parts. The functions below write parts to any `Out` with this addQuad and
+/// addBox: a CellParts (the twin, tests), or the intersector's part tester, which tests each part
+/// as it is made instead of keeping ~770 bytes of parts on the stack (GPU local memory).
 struct CellParts {
     WallPart parts[kMaxCellParts];
     int count = 0;
@@ -49,7 +51,8 @@ struct CellParts {
 
 /// The plain margins of a wall around its cell grid, as quads in the plane w = 0 (left, right,
 /// bottom, top; empty ones left out).
-URBIS_HD inline void marginParts(const WallRecord& wall, CellParts& out) {
+template <class Out>
+URBIS_HD inline void marginParts(const WallRecord& wall, Out& out) {
     const float u0 = wall.gridU, u1 = wall.gridU + wall.gridWidth();
     const float v0 = wall.gridV, v1 = wall.gridV + wall.gridHeight();
     const uint32_t m = wall.wallMaterial;
@@ -66,8 +69,9 @@ URBIS_HD inline HashStream cellRandom(const WallRecord& wall, uint32_t floor, ui
 
 /// The room behind an opening: five quads (back, two sides, floor, ceiling) inset from the cell
 /// [u0, u1] x [v0, v1] by a thin inner wall, from w = -depthBack to w = front.
+template <class Out>
 URBIS_HD inline void addRoom(const WallRecord& wall, float u0, float u1, float v0, float v1, float front,
-                             uint32_t material, CellSide side, CellParts& out) {
+                             uint32_t material, CellSide side, Out& out) {
     if (side == CellSide::Front) return;
     constexpr float kInset = 0.05f;
     const float a = u0 + kInset, b = u1 - kInset, c = v0 + kInset, d = v1 - kInset, back = -wall.depthBack;
@@ -79,8 +83,9 @@ URBIS_HD inline void addRoom(const WallRecord& wall, float u0, float u1, float v
 }
 
 /// The plane w = `w` of the cell [u0, u1] x [v0, v1] around the opening [ou0, ou1] x [ov0, ov1]: four quads.
+template <class Out>
 URBIS_HD inline void addFrame(float u0, float u1, float v0, float v1, float ou0, float ou1, float ov0, float ov1, float w,
-                              SurfacePart part, uint32_t material, CellParts& out) {
+                              SurfacePart part, uint32_t material, Out& out) {
     out.addQuad(2, {u0, v0, w}, {ou0, v1, w}, part, material);
     out.addQuad(2, {ou1, v0, w}, {u1, v1, w}, part, material);
     out.addQuad(2, {ou0, v0, w}, {ou1, ov0, w}, part, material);
@@ -90,8 +95,9 @@ URBIS_HD inline void addFrame(float u0, float u1, float v0, float v1, float ou0,
 /// A recessed opening [ou0, ou1] x [ov0, ov1] in the cell [u0, u1] x [v0, v1]: the wall plane around
 /// it and its jambs (front), the glass `reveal` metres deep (both sides) and the room behind, whose
 /// front wall lies in the glass plane (back).
+template <class Out>
 URBIS_HD inline void addOpening(const WallRecord& wall, float u0, float u1, float v0, float v1, float ou0, float ou1,
-                                float ov0, float ov1, uint32_t roomMaterial, CellSide side, CellParts& out) {
+                                float ov0, float ov1, uint32_t roomMaterial, CellSide side, Out& out) {
     const uint32_t m = wall.wallMaterial;
     const float r = -wall.reveal;
     if (side != CellSide::Back) {
@@ -109,8 +115,9 @@ URBIS_HD inline void addOpening(const WallRecord& wall, float u0, float u1, floa
 
 /// A balcony in front of the cell's opening [ou0, ou1]: a slab on the cell's floor and a railing
 /// (front and two sides) around it, depthFront metres deep.
+template <class Out>
 URBIS_HD inline void addBalcony(const WallRecord& wall, float u0, float u1, float v0, float ou0, float ou1,
-                                CellSide side, CellParts& out) {
+                                CellSide side, Out& out) {
     if (side == CellSide::Back) return;
     constexpr float kSlab = 0.15f, kRail = 0.05f, kRailHeight = 1.0f;
     const float a = fmaxf(u0 + 0.1f, ou0 - 0.6f), b = fminf(u1 - 0.1f, ou1 + 0.6f), f = wall.depthFront;
@@ -125,8 +132,9 @@ URBIS_HD inline void addBalcony(const WallRecord& wall, float u0, float u1, floa
 
 /// A curtain-wall panel filling the cell: half mullions on its four edges, a spandrel below
 /// wall.sillHeight and glass above it, both `reveal` deep, and the room behind.
+template <class Out>
 URBIS_HD inline void addCurtainPanel(const WallRecord& wall, float u0, float u1, float v0, float v1,
-                                     uint32_t roomMaterial, CellSide side, CellParts& out) {
+                                     uint32_t roomMaterial, CellSide side, Out& out) {
     constexpr float kHalfMullion = 0.06f, kMullionDepth = 0.12f;
     const float r = -wall.reveal, m = kHalfMullion;
     const uint32_t mullion = wall.facadeMaterials + uint32_t(FacadeMaterial::Mullion);
@@ -181,14 +189,20 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
 /// The parts of cell (floor, slot) of `wall` on `side` of its glass plane, in wall coordinates; all
 /// lie within the cell's column [u0, u1] x [v0, v1] (any w), which lets the grid traversal stop at
 /// the first cell hit.
-URBIS_HD inline void cellParts(const WallRecord& wall, uint32_t floor, uint32_t slot, CellSide side, CellParts& out) {
-    const CellLayout c = cellLayout(wall, floor, slot);
+template <class Out>
+URBIS_HD inline void cellParts(const WallRecord& wall, const CellLayout& c, CellSide side, Out& out) {
     if (wall.style == WallStyle::Curtain) {
         addCurtainPanel(wall, c.u0, c.u1, c.v0, c.v1, c.roomMaterial, side, out);
         return;
     }
     addOpening(wall, c.u0, c.u1, c.v0, c.v1, c.ou0, c.ou1, c.ov0, c.ov1, c.roomMaterial, side, out);
     if (c.balcony) addBalcony(wall, c.u0, c.u1, c.v0, c.ou0, c.ou1, side, out);
+}
+
+/// The same, drawing the cell's layout from its hash.
+template <class Out>
+URBIS_HD inline void cellParts(const WallRecord& wall, uint32_t floor, uint32_t slot, CellSide side, Out& out) {
+    cellParts(wall, cellLayout(wall, floor, slot), side, out);
 }
 
 } // namespace urbis

@@ -48,9 +48,26 @@ struct WallRecord {
     uint32_t facadeMaterials = 0;///< first of FacadeMaterial::Count materials
     WallStyle style = WallStyle::Punched;
     uint8_t flags = 0;           ///< WallFlags
+    /// The tile of the wall this record stands for, as a BVH primitive: slots [slot0, slotEnd) and
+    /// floors [floor0, floorEnd) of the grid (ends clamped to slots and floors), plus the margins
+    /// next to them where the tile touches the wall's edge. The defaults are the whole wall. Cell
+    /// indices, hashes and geometry stay those of the whole wall, so tiles of one wall together
+    /// give exactly the whole wall's hits (see splitWallIntoTiles).
+    uint16_t slot0 = 0, slotEnd = 0xffff;
+    uint16_t floor0 = 0, floorEnd = 0xffff;
 
     URBIS_HD float gridWidth() const { return slotWidth * float(slots); }
     URBIS_HD float gridHeight() const { return floorHeight * float(floors); }
+    /// The tile's last slot + 1 and last floor + 1.
+    URBIS_HD int tileSlotEnd() const { return slotEnd < slots ? int(slotEnd) : int(slots); }
+    URBIS_HD int tileFloorEnd() const { return floorEnd < floors ? int(floorEnd) : int(floors); }
+    /// The tile's extent in u and v: its cells, and the wall's margins where it touches the wall's edge.
+    URBIS_HD float tileU0() const { return slot0 == 0 ? 0.0f : gridU + slotWidth * float(slot0); }
+    URBIS_HD float tileU1() const { return tileSlotEnd() >= int(slots) ? width : gridU + slotWidth * float(tileSlotEnd()); }
+    URBIS_HD float tileV0() const { return floor0 == 0 ? 0.0f : gridV + floorHeight * float(floor0); }
+    URBIS_HD float tileV1() const {
+        return tileFloorEnd() >= int(floors) ? height : gridV + floorHeight * float(tileFloorEnd());
+    }
     /// World position of wall coordinates (u, v, w).
     URBIS_HD Vec3f worldFromWall(float u, float v, float w) const {
         return origin + axisU * u + Vec3f{0, v, 0} + normal * w;
