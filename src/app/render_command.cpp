@@ -161,7 +161,7 @@ PreparedScene prepareScene(const RenderOptions& o) {
     PreparedScene p;
     Sun sun = daySun(o);
     CityMeshOptions meshOptions;
-    meshOptions.geometry = parseGeometryModes(o.geometry);
+    meshOptions.geometry = p.geometry = parseGeometryModes(o.geometry);
     auto t0 = Clock::now();
     p.city = loadCity(o);
     scaleHeights(p.city, o.heightScale);
@@ -184,8 +184,6 @@ PreparedScene prepareScene(const RenderOptions& o) {
 void runRender(const RenderOptions& o) {
     size_t threads = o.threads ? o.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
-    daySun(o);   // fail on a bad --sun or --geometry before any work
-    parseGeometryModes(o.geometry);
     wallTileSize(o.wallTiles);
     checkOutputFolder(o.outFile);
     checkOutputFolder(o.statsFile);
@@ -215,7 +213,7 @@ void runRender(const RenderOptions& o) {
         {"dropped", dropped},
         {"triangles", scene.triangles.size()},
         {"triangles_by_kind", cityMesh.trianglesByKind},
-        {"geometry", {{"walls", representationName(parseGeometryModes(o.geometry).walls)},
+        {"geometry", {{"walls", representationName(prepared.geometry.walls)},
                       // Procedural roofs are not written yet: roofs are stored triangles in both modes.
                       {"roofs", representationName(Representation::Triangles)}}},
         {"walls", scene.walls.empty() ? size_t(0) : cityMesh.facadeWalls},

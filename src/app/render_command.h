@@ -42,6 +42,7 @@ struct PreparedScene {
     CityMesh mesh;
     Scene scene;
     Camera camera;
+    GeometryModes geometry;   ///< --geometry as parsed
     double secondsImport = 0, secondsCitygen = 0, secondsBvh = 0;
 };
 
