@@ -121,7 +121,16 @@ Ray randomRay(const WallRecord& w, RayKind kind, std::mt19937& rng) {
     return ray;
 }
 
-/// Rays whose answers differ: hit vs miss, or distances apart by more than a millimetre.
+/// Whether the ray reaches its hit at t from inside the wall's solid body (round the wall's end or
+/// under its bottom, behind the wall plane): such a hit has no defined answer, and in a scene the
+/// building's other walls or the ground stop the ray first.
+bool reachedThroughSolid(const WallRecord& wall, const Ray& ray, float t) {
+    const WallRay r(wall, ray);
+    return insideSolid(wall, r.o + r.d * fmaxf(0.0f, t - 1e-3f));
+}
+
+/// Rays whose answers differ: hit vs miss, distances apart by more than a millimetre, or another
+/// material or part.
 size_t disagreements(const WallRecord& wall, RayKind kind, size_t rays, size_t& hits) {
     std::mt19937 rng(uint32_t(kind) * 7919u + uint32_t(wall.style));
     size_t bad = 0;
@@ -133,7 +142,9 @@ size_t disagreements(const WallRecord& wall, RayKind kind, size_t rays, size_t& 
         WallHit any;
         const bool c = intersectWall<true>(wall, ray, any);
         hits += b;
-        if (a != b || c != b || (a && fabsf(fast.t - slow.t) > 1e-3f)) ++bad;
+        if ((a && reachedThroughSolid(wall, ray, fast.t)) || (b && reachedThroughSolid(wall, ray, slow.t))) continue;
+        const bool sameSurface = fast.material == slow.material && fast.part == slow.part;
+        if (a != b || c != b || (a && (fabsf(fast.t - slow.t) > 1e-3f || !sameSurface))) ++bad;
     }
     return bad;
 }
@@ -149,7 +160,8 @@ TEST_P(FacadeDda, MatchesBruteForceOverEveryCell) {
     const WallRecord wall = testWall(style);
     size_t hits = 0;
     const size_t bad = disagreements(wall, kind, kRaysPerKind, hits);
-    // Rounding at shared part edges (kWallPartPadding) may differ in a handful of rays (0.01 %).
+    // Rounding at shared part edges (kWallPartPadding) may differ in a handful of rays (0.01 %):
+    // rays within 0.2 mm of an edge, where padded parts overlap.
     EXPECT_LE(bad, kRaysPerKind / 10000) << "of " << kRaysPerKind << " rays, " << hits << " hits";
     EXPECT_GT(hits, kRaysPerKind / 20) << "the rays must actually meet the wall";
 }
