@@ -73,23 +73,56 @@ float depthBehind(const Ring& outer, Vec2d a, Vec2d outward) {
     return float(depth);
 }
 
+/// The roof's parapet bands, found by their footprint edge.
+class ParapetBands {
+public:
+    explicit ParapetBands(const RoofResult& roof) : bands_(roof.parapetBands) {
+        std::sort(bands_.begin(), bands_.end(), [](const ParapetBand& x, const ParapetBand& y) { return before(x.p0, y.p0); });
+    }
+    /// The band over the edge a -> b, or null.
+    const ParapetBand* find(Vec2d a, Vec2d b) const {
+        auto it = std::lower_bound(bands_.begin(), bands_.end(), a, [](const ParapetBand& x, Vec2d p) { return before(x.p0, p); });
+        for (; it != bands_.end() && it->p0.x == a.x && it->p0.y == a.y; ++it)
+            if (it->p1.x == b.x && it->p1.y == b.y) return &*it;
+        return nullptr;
+    }
+
+private:
+    static bool before(Vec2d p, Vec2d q) { return p.x < q.x || (p.x == q.x && p.y < q.y); }
+    std::vector<ParapetBand> bands_;
+};
+
+/// Gives `wall` (on the edge a -> b) the parapet over `band`: its inner face's ends along the edge.
+void putParapetOnWall(const ParapetBand& band, const RoofResult& roof, Vec2d a, Vec2d b, WallRecord& wall) {
+    const double dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
+    auto along = [&](Vec2d q) { return float(((q.x - a.x) * dx + (q.y - a.y) * dy) / len); };
+    wall.parapetHeight = float(roof.parapetHeight);
+    wall.parapetThickness = float(roof.parapetThickness);
+    wall.parapetInner0 = along(band.q0);
+    wall.parapetInner1 = along(band.q1);
+}
+
 /// One wall per ring edge: a procedural wall record where the edge is large enough for a facade
-/// (and `facade` is given), else a plain quad of two triangles.
-void addWalls(const Ring& ring, bool isHole, const Ring& outer, double bottom, double top, TriangleInfo info,
-              const WallContext* facade, uint32_t& wallIndex, TriangleMesh& mesh, std::vector<WallRecord>& walls,
-              BuildingTriangleCounts& counts) {
+/// (and `facade` is given), else a plain quad of two triangles. The edge's parapet band goes on its
+/// wall record, or is meshed.
+void addWalls(const Ring& ring, bool isHole, const Ring& outer, double bottom, const RoofResult& roof,
+              const ParapetBands& bands, const RoofSink& roofSink, TriangleInfo info, const WallContext* facade,
+              uint32_t& wallIndex, TriangleMesh& mesh, std::vector<WallRecord>& walls, BuildingTriangleCounts& counts) {
+    const double top = roof.wallTop;
     const double area = signedArea2(ring);
     const bool outsideRight = isHole ? area < 0.0 : area > 0.0;
     for (size_t i = 0; i < ring.size(); ++i) {
         Vec2d a = ring[i], b = ring[(i + 1) % ring.size()];
         const uint32_t index = wallIndex++;
+        const ParapetBand* band = bands.find(a, b);
         if (facade) {
             const double dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
             const double side = outsideRight ? 1.0 : -1.0;
             const Vec2d outward{len > 0 ? side * dy / len : 0.0, len > 0 ? -side * dx / len : 0.0};
             WallRecord wall;
-            if (layoutWall(*facade, a, b, outsideRight, float(bottom), float(top), depthBehind(outer, a, outward), index,
-                           wall)) {
+            if (layoutWall(*facade, a, b, outsideRight, float(bottom), float(top), depthBehind(outer, a, outward),
+                           float(roof.parapetHeight), index, wall)) {
+                if (band) putParapetOnWall(*band, roof, a, b, wall);
                 walls.push_back(wall);
                 ++counts.wallRecords;
                 continue;
@@ -101,6 +134,11 @@ void addWalls(const Ring& ring, bool isHole, const Ring& outer, double bottom, d
         mesh.add({a0, b1, a1}, info);
         counts.walls += 2;
         ++counts.plainWalls;
+        if (band) {
+            RoofSink sink = roofSink;
+            meshParapetBand(*band, roof.parapetHeight, sink);
+            counts.walls += sink.wallTriangles;
+        }
     }
 }
 
@@ -115,17 +153,19 @@ bool meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleIn
     counts.roofs += roof.roofTriangles;
     counts.walls += roof.wallTriangles;
     for (const char* reason : roof.fallbacks) ++counts.roofFallbacks[reason];
-    double bottom = building.minHeight, top = roof.wallTop;
+    const double bottom = building.minHeight;
     if (bottom > 0.0) {
         for (const auto& t : footprint)
             mesh.add({worldFromCity(t[0], bottom), worldFromCity(t[1], bottom), worldFromCity(t[2], bottom)}, wallInfo);
         counts.walls += footprint.size();
     }
     const Ring& outer = building.footprint.outer;
+    const ParapetBands bands(roof);
+    const RoofSink roofSink{mesh, roofInfo, wallInfo, roof.wallTop};
     uint32_t wallIndex = 0;
-    addWalls(outer, false, outer, bottom, top, wallInfo, facade, wallIndex, mesh, walls, counts);
+    addWalls(outer, false, outer, bottom, roof, bands, roofSink, wallInfo, facade, wallIndex, mesh, walls, counts);
     for (const Ring& hole : building.footprint.holes)
-        addWalls(hole, true, outer, bottom, top, wallInfo, facade, wallIndex, mesh, walls, counts);
+        addWalls(hole, true, outer, bottom, roof, bands, roofSink, wallInfo, facade, wallIndex, mesh, walls, counts);
     return true;
 }
 

@@ -8,7 +8,8 @@ namespace urbis {
 namespace {
 
 constexpr float kEdgeMargin = 0.5f;      ///< solid wall at each end of a wall (the building's corners)
-constexpr float kTopMargin = 0.6f;       ///< parapet or cornice
+constexpr float kTopMargin = 0.6f;       ///< cornice, or the outside of a parapet
+constexpr float kDeckClearance = 0.2f;   ///< between a parapet roof's deck and the top floor's rooms
 constexpr float kBottomMargin = 0.3f;    ///< plinth
 constexpr float kMinFloorHeight = 2.4f, kMaxFloorHeight = 6.0f;
 
@@ -26,12 +27,13 @@ int floorCount(const Building& building, const FacadeStyle& style, float gridHei
 } // namespace
 
 bool layoutWall(const WallContext& context, Vec2d a, Vec2d b, bool outsideRight, float bottom, float top,
-                float depthInside, uint32_t wallIndex, WallRecord& out) {
+                float depthInside, float parapetHeight, uint32_t wallIndex, WallRecord& out) {
     const FacadeStyle& style = context.style;
     const double dx = b.x - a.x, dy = b.y - a.y;
     const float width = float(std::sqrt(dx * dx + dy * dy)), height = top - bottom;
     if (!style.hasFacade || height < kMinFacadeHeight || width < kMinFacadeWidth) return false;
-    const float gridWidth = width - 2.0f * kEdgeMargin, gridHeight = height - kTopMargin - kBottomMargin;
+    const float topMargin = std::max(kTopMargin, parapetHeight > 0.0f ? parapetHeight + kDeckClearance : 0.0f);
+    const float gridWidth = width - 2.0f * kEdgeMargin, gridHeight = height - topMargin - kBottomMargin;
     const int floors = floorCount(*context.building, style, gridHeight);
     const int slots = std::max(1, int(gridWidth / style.slotWidth));
     if (floors > 0xffff || slots > 0xffff) return false;

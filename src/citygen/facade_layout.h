@@ -22,9 +22,10 @@ struct WallContext {
 /// The wall on the footprint edge from `a` to `b` (city plane, metres) between heights `bottom` and
 /// `top`, whose outside is to the right of a -> b when `outsideRight` (the outer ring of a
 /// counter-clockwise footprint) or to its left. `depthInside` is how deep the building is behind
-/// the edge (rooms reach at most 0.4 of it). Returns false, leaving `out` alone, when the wall is too
-/// small for a facade (it then stays a plain quad).
+/// the edge (rooms reach at most 0.4 of it). `parapetHeight` is how far below the top a flat roof's
+/// deck lies behind a parapet (0: no parapet): the top floor's rooms end below it. Returns false,
+/// leaving `out` alone, when the wall is too small for a facade (it then stays a plain quad).
 bool layoutWall(const WallContext& context, Vec2d a, Vec2d b, bool outsideRight, float bottom, float top,
-                float depthInside, uint32_t wallIndex, WallRecord& out);
+                float depthInside, float parapetHeight, uint32_t wallIndex, WallRecord& out);
 
 } // namespace urbis

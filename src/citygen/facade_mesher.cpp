@@ -1,5 +1,6 @@
 #include "citygen/facade_mesher.h"
 
+#include "geometry/wall_parapet.h"
 #include "geometry/wall_parts.h"
 
 namespace urbis {
@@ -46,12 +47,30 @@ void addParts(const WallRecord& wall, const CellParts& parts, TriangleMesh& mesh
     }
 }
 
+/// The parapet's top and inner face, two triangles each (ParapetCorners).
+size_t parapetTriangles(const WallRecord& wall) { return wall.parapetHeight > 0.0f ? 4 : 0; }
+
+void addParapet(const WallRecord& wall, TriangleMesh& mesh) {
+    if (!parapetTriangles(wall)) return;
+    const ParapetCorners corners = parapetCorners(wall);
+    TriangleInfo info;
+    info.material = wall.wallMaterial;
+    info.object = wall.object;
+    info.part = uint32_t(SurfacePart::Facade);
+    for (const Vec3f* q : {corners.top, corners.inner}) {
+        Vec3f p[4];
+        for (int k = 0; k < 4; ++k) p[k] = wall.worldFromWall(q[k].x, q[k].y, q[k].z);
+        mesh.add({p[0], p[1], p[2]}, info);
+        mesh.add({p[0], p[2], p[3]}, info);
+    }
+}
+
 } // namespace
 
 size_t wallTwinTriangleCount(const WallRecord& wall) {
     CellParts margins;
     marginParts(wall, margins);
-    size_t n = partTriangles(margins);
+    size_t n = partTriangles(margins) + parapetTriangles(wall);
     for (uint32_t j = 0; j < wall.floors; ++j)
         for (uint32_t i = 0; i < wall.slots; ++i) {
             CellParts cell;
@@ -65,6 +84,7 @@ void meshWall(const WallRecord& wall, TriangleMesh& mesh) {
     CellParts margins;
     marginParts(wall, margins);
     addParts(wall, margins, mesh);
+    addParapet(wall, mesh);
     for (uint32_t j = 0; j < wall.floors; ++j)
         for (uint32_t i = 0; i < wall.slots; ++i) {
             CellParts cell;

@@ -151,9 +151,13 @@ RoofResult meshRoof(const Building& building, const FootprintTriangles& footprin
     switch (shape) {
     case RoofShape::Flat: {
         const double parapetHeight = 0.8 + 0.4 * double(building.seed) * 0x1p-32;
-        if (skeleton && skeleton->maxTime > 2 * kParapetThickness)
-            done = meshParapetRoof(*skeleton, parapetHeight, kParapetThickness, sink);
-        else
+        if (skeleton && skeleton->maxTime > 2 * kParapetThickness) {
+            done = meshParapetRoof(*skeleton, parapetHeight, kParapetThickness, sink, result.parapetBands);
+            if (done) {
+                result.parapetHeight = parapetHeight;
+                result.parapetThickness = kParapetThickness;
+            }
+        } else
             meshFlatRoof(footprint, sink);
         break;
     }

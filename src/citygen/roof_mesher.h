@@ -17,6 +17,9 @@ struct RoofResult {
     size_t roofTriangles = 0;              ///< roof surface (roof material)
     size_t wallTriangles = 0;              ///< gables, skillion high sides, parapets (wall material)
     std::vector<const char*> fallbacks;    ///< why the roof was meshed as a simpler shape, if it was
+    double parapetHeight = 0;              ///< m from the deck to the parapet's top (the wall top); 0: none
+    double parapetThickness = 0;           ///< m
+    std::vector<ParapetBand> parapetBands; ///< parapet tops not meshed: the walls' to carry or mesh
 };
 
 /// Height in m of a roof of `shape` on `building` whose footprint has straight-skeleton depth `depth`

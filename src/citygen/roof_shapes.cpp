@@ -3,6 +3,7 @@
 #include "citygen/ear_clipping.h"
 
 #include <cmath>
+#include <optional>
 
 namespace urbis {
 
@@ -21,26 +22,60 @@ Vec2d areaCentroid(const Ring& ring) {
     return {cx / (3 * area), cy / (3 * area)};
 }
 
-/// Calls `triangle` for each triangle of each skeleton face, with s the skeleton time; false if a face fails.
-template <typename F>
-bool forEachSkeletonTriangle(const StraightSkeleton& skeleton, F&& triangle) {
-    std::vector<std::vector<std::array<uint32_t, 3>>> faces;
+/// The skeleton's faces as rings of level points, s the skeleton time.
+std::vector<std::vector<LevelPoint>> skeletonRings(const StraightSkeleton& skeleton) {
+    std::vector<std::vector<LevelPoint>> rings;
     for (const std::vector<uint32_t>& face : skeleton.faces) {
-        std::vector<Vec2d> ring;
-        for (uint32_t i : face) ring.push_back(skeleton.points[i]);
-        faces.push_back(earClip(ring));
-        if (faces.back().empty()) return false;
+        rings.emplace_back();
+        for (uint32_t i : face) rings.back().push_back({skeleton.points[i], skeleton.times[i]});
     }
-    for (size_t f = 0; f < faces.size(); ++f)
-        for (const auto& t : faces[f]) {
-            std::array<LevelPoint, 3> tri;
-            for (size_t k = 0; k < 3; ++k) {
-                const uint32_t i = skeleton.faces[f][t[k]];
-                tri[k] = {skeleton.points[i], skeleton.times[i]};
-            }
-            triangle(tri);
-        }
+    return rings;
+}
+
+/// Calls `triangle(points, ring)` for each triangle of each ring; false (calling nothing) if a ring
+/// cannot be triangulated.
+template <typename F>
+bool forEachRingTriangle(const std::vector<std::vector<LevelPoint>>& rings, F&& triangle) {
+    std::vector<std::vector<std::array<uint32_t, 3>>> triangles;
+    for (const std::vector<LevelPoint>& ring : rings) {
+        std::vector<Vec2d> points;
+        for (const LevelPoint& p : ring) points.push_back(p.p);
+        triangles.push_back(earClip(points));
+        if (triangles.back().empty()) return false;
+    }
+    for (size_t f = 0; f < rings.size(); ++f)
+        for (const auto& t : triangles[f]) triangle(std::array<LevelPoint, 3>{rings[f][t[0]], rings[f][t[1]], rings[f][t[2]]}, f);
     return true;
+}
+
+/// The band of a skeleton face (`ring`) when it is the quad p0 p1 q1 q0: the face's contour edge
+/// and the crossings of its arcs from the edge's ends with s = thickness, computed as forEachSlab
+/// cuts a triangle's edge (so bit-identical to where a neighbouring face's pieces cut the arc);
+/// `deck` is then the rest of the face: q1, the face's other vertices, q0.
+std::optional<ParapetBand> quadBand(const std::vector<LevelPoint>& ring, double thickness, std::vector<LevelPoint>& deck) {
+    const size_t n = ring.size();
+    size_t k = n;
+    for (size_t i = 0; i < n; ++i)
+        if (ring[i].s == 0.0 && ring[(i + 1) % n].s == 0.0) k = i;
+    if (k == n || n < 3) return std::nullopt;
+    for (size_t i = 2; i < n; ++i)
+        if (ring[(k + i) % n].s < thickness) return std::nullopt;
+    auto crossing = [&](LevelPoint end, LevelPoint arc) {
+        std::vector<LevelPoint> cut;
+        appendCutEdge(end, arc, {thickness}, cut);
+        return cut.size() == 2 ? cut[1] : arc;
+    };
+    const LevelPoint p0 = ring[k], p1 = ring[(k + 1) % n];
+    const LevelPoint q0 = crossing(p0, ring[(k + n - 1) % n]), q1 = crossing(p1, ring[(k + 2) % n]);
+    deck = {q1};
+    for (size_t i = 2; i < n; ++i) {
+        const LevelPoint& v = ring[(k + i) % n];
+        if ((i == 2 || i + 1 == n) && v.s == thickness) continue;  // q1 or q0 itself
+        deck.push_back(v);
+    }
+    deck.push_back(q0);
+    if (deck.size() < 3) return std::nullopt;  // the band is a triangle
+    return ParapetBand{p0.p, p1.p, q0.p, q1.p};
 }
 
 } // namespace
@@ -50,9 +85,27 @@ void meshFlatRoof(const FootprintTriangles& footprint, RoofSink& sink) {
     for (const auto& t : footprint) sink.roof(sink.at(t[0], 0), sink.at(t[1], 0), sink.at(t[2], 0));
 }
 
-bool meshParapetRoof(const StraightSkeleton& skeleton, double parapetHeight, double thickness, RoofSink& sink) {
+bool meshParapetRoof(const StraightSkeleton& skeleton, double parapetHeight, double thickness, RoofSink& sink,
+                     std::vector<ParapetBand>& bands) {
+    // A face whose band is a quad keeps only its deck (the face beyond the band); the others are
+    // cut at the thickness into band and deck, with the inner face along each cut.
+    std::vector<std::vector<LevelPoint>> rings = skeletonRings(skeleton);
+    std::vector<bool> quad(rings.size());
+    std::vector<ParapetBand> found;
+    for (size_t f = 0; f < rings.size(); ++f) {
+        std::vector<LevelPoint> deck;
+        if (std::optional<ParapetBand> band = quadBand(rings[f], thickness, deck)) {
+            quad[f] = true;
+            found.push_back(*band);
+            rings[f] = std::move(deck);
+        }
+    }
     const std::vector<double> cuts{thickness};
-    return forEachSkeletonTriangle(skeleton, [&](const std::array<LevelPoint, 3>& tri) {
+    const bool done = forEachRingTriangle(rings, [&](const std::array<LevelPoint, 3>& tri, size_t face) {
+        if (quad[face]) {
+            sink.roof(sink.at(tri[0].p, -parapetHeight), sink.at(tri[1].p, -parapetHeight), sink.at(tri[2].p, -parapetHeight));
+            return;
+        }
         forEachSlab(tri, cuts, [&](const std::vector<LevelPoint>& part, size_t slab) {
             const double h = slab == 0 ? 0.0 : -parapetHeight;
             for (size_t i = 1; i + 1 < part.size(); ++i) {
@@ -70,6 +123,17 @@ bool meshParapetRoof(const StraightSkeleton& skeleton, double parapetHeight, dou
             }
         });
     });
+    if (done) bands.insert(bands.end(), found.begin(), found.end());
+    return done;
+}
+
+void meshParapetBand(const ParapetBand& band, double parapetHeight, RoofSink& sink) {
+    const Vec3f p0 = sink.at(band.p0, 0), p1 = sink.at(band.p1, 0), q0 = sink.at(band.q0, 0), q1 = sink.at(band.q1, 0);
+    sink.wall(p0, p1, q1);
+    sink.wall(p0, q1, q0);
+    const Vec3f d0 = sink.at(band.q0, -parapetHeight), d1 = sink.at(band.q1, -parapetHeight);
+    sink.wall(d0, d1, q1);
+    sink.wall(d0, q1, q0);
 }
 
 void meshRidgeRoof(const Polygon& polygon, const FootprintTriangles& footprint, Vec2d across,
@@ -90,7 +154,7 @@ void meshRidgeRoof(const Polygon& polygon, const FootprintTriangles& footprint, 
 }
 
 bool meshSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile& profile, RoofSink& sink) {
-    return forEachSkeletonTriangle(skeleton, [&](const std::array<LevelPoint, 3>& tri) {
+    return forEachRingTriangle(skeletonRings(skeleton), [&](const std::array<LevelPoint, 3>& tri, size_t) {
         emitProfiledTriangle(tri, profile, sink);
     });
 }

@@ -18,10 +18,24 @@ using FootprintTriangles = std::vector<std::array<Vec2d, 3>>;
 /// A flat roof: the footprint triangles at the wall top.
 void meshFlatRoof(const FootprintTriangles& footprint, RoofSink& sink);
 
+/// One footprint edge's share of a parapet's top: the edge p0 -> p1 (as in the footprint's ring)
+/// and the points q0, q1 where the parapet's top meets the deck's edge, on the straight skeleton's
+/// arcs from p0 and p1 at the parapet's thickness: the quad p0 p1 q1 q0.
+struct ParapetBand {
+    Vec2d p0, p1, q0, q1;
+};
+
 /// A flat roof behind a parapet: the parapet's top (`thickness` m wide, the straight skeleton's
-/// offset band) at the wall top, its inner face, and the deck `parapetHeight` m lower.
-/// Returns false (emitting nothing) when a triangle of a skeleton face cannot be found.
-bool meshParapetRoof(const StraightSkeleton& skeleton, double parapetHeight, double thickness, RoofSink& sink);
+/// offset band) at the wall top, its inner face, and the deck `parapetHeight` m lower. An edge
+/// whose band is the quad p0 p1 q1 q0 (its skeleton face has no vertex nearer than `thickness`
+/// but the edge's own) is not meshed but appended to `bands`, for its wall to carry
+/// (WallRecord::parapetHeight) or meshParapetBand to mesh. Returns false (emitting nothing) when a
+/// triangle of a skeleton face cannot be found.
+bool meshParapetRoof(const StraightSkeleton& skeleton, double parapetHeight, double thickness, RoofSink& sink,
+                     std::vector<ParapetBand>& bands);
+
+/// The parapet's top over `band` and its inner face down to the deck, as four wall triangles.
+void meshParapetBand(const ParapetBand& band, double parapetHeight, RoofSink& sink);
 
 /// A roof whose height is `profile` of s = dot(p, across) (skillion, gabled, gambrel, round), over
 /// the footprint triangles, with vertical walls (gables) wherever it stands above a footprint edge.

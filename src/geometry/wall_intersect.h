@@ -5,6 +5,7 @@
 #pragma once
 
 #include "accel/bvh_traverse.h"
+#include "geometry/wall_parapet.h"
 #include "geometry/wall_parts.h"
 #include "math/ray.h"
 
@@ -119,6 +120,38 @@ URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const WallRay&
     return true;
 }
 
+/// The parapet's top and inner face (wall_parapet.h). A tile has it only where it reaches the
+/// wall's top, over its own u range (open at the wall's ends, where the mitres reach beyond them).
+URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const WallRay& r, float& tmax, WallHit& hit) {
+    if (!(wall.parapetHeight > 0.0f) || wall.tileFloorEnd() < int(wall.floors)) return false;
+    constexpr float e = kWallPartPadding;
+    const float uLo = wall.slot0 == 0 ? -3.0e38f : wall.tileU0() - e;
+    const float uHi = wall.tileSlotEnd() >= int(wall.slots) ? 3.0e38f : wall.tileU1() + e;
+    const float inner = -wall.parapetThickness;
+    bool found = false;
+    if (r.d.y != 0.0f) {
+        const float t = (wall.height - r.o.y) * r.invD.y;
+        const float u = r.o.x + t * r.d.x, w = r.o.z + t * r.d.z;
+        if (t > r.tmin && t < tmax && w >= inner - e && w <= e && u >= fmaxf(uLo, parapetStartAt(wall, w) - e) &&
+            u <= fminf(uHi, parapetEndAt(wall, w) + e)) {
+            tmax = t;
+            hit = {t, 1u, wall.wallMaterial, SurfacePart::Facade};
+            found = true;
+        }
+    }
+    if (r.d.z != 0.0f) {
+        const float t = (inner - r.o.z) * r.invD.z;
+        const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
+        if (t > r.tmin && t < tmax && v >= wall.height - wall.parapetHeight - e && v <= wall.height + e &&
+            u >= fmaxf(uLo, wall.parapetInner0 - e) && u <= fminf(uHi, wall.parapetInner1 + e)) {
+            tmax = t;
+            hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
+            found = true;
+        }
+    }
+    return found;
+}
+
 /// The common case of a punched cell without a balcony, for a ray in front of the glass: where the
 /// ray crosses the wall plane inside the cell, it hits the frame around the opening, or passes the
 /// opening and hits the glass if it still lies inside the opening there. Returns false, deciding
@@ -157,6 +190,8 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     const WallRay r(wall, ray);
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, r, tmax, hit);
+    if (found && AnyHit) return true;
+    found |= intersectWallParapet(wall, r, tmax, hit);
     if (found && AnyHit) return true;
     const int slot0 = wall.slot0, slotEnd = wall.tileSlotEnd(), floor0 = wall.floor0, floorEnd = wall.tileFloorEnd();
     if (slot0 >= slotEnd || floor0 >= floorEnd) return found;

@@ -55,6 +55,13 @@ struct WallRecord {
     /// give exactly the whole wall's hits (see splitWallIntoTiles).
     uint16_t slot0 = 0, slotEnd = 0xffff;
     uint16_t floor0 = 0, floorEnd = 0xffff;
+    /// The parapet on the wall's top, around a flat roof's deck (none when parapetHeight is 0): its
+    /// top at v = height from the wall plane to w = -parapetThickness, its inner face there from the
+    /// deck (v = height - parapetHeight) up. The inner face runs from u = parapetInner0 to
+    /// parapetInner1, where the parapets of the neighbouring walls meet it in mitres (beyond the
+    /// wall's ends at reflex corners): the straight skeleton's offset of the footprint.
+    float parapetHeight = 0, parapetThickness = 0;
+    float parapetInner0 = 0, parapetInner1 = 0;
 
     URBIS_HD float gridWidth() const { return slotWidth * float(slots); }
     URBIS_HD float gridHeight() const { return floorHeight * float(floors); }

@@ -41,8 +41,10 @@ std::vector<WallRecord> splitWallsIntoTiles(const std::vector<WallRecord>& walls
 }
 
 Bounds3f wallTileBounds(const WallRecord& wall) {
-    const float u0 = wall.tileU0() - (wall.slot0 > 0 ? kTileOverlap : 0.0f);
-    const float u1 = wall.tileU1() + (wall.tileSlotEnd() < int(wall.slots) ? kTileOverlap : 0.0f);
+    // At the wall's ends the parapet's mitres may reach beyond it (reflex corners).
+    const float u0 = wall.slot0 > 0 ? wall.tileU0() - kTileOverlap : fminf(0.0f, wall.parapetInner0);
+    const float u1 = wall.tileSlotEnd() < int(wall.slots) ? wall.tileU1() + kTileOverlap
+                                                          : fmaxf(wall.width, wall.parapetInner1);
     const float v0 = wall.tileV0() - (wall.floor0 > 0 ? kTileOverlap : 0.0f);
     const float v1 = wall.tileV1() + (wall.tileFloorEnd() < int(wall.floors) ? kTileOverlap : 0.0f);
     Bounds3f b;
