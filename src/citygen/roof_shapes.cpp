@@ -2,6 +2,7 @@
 
 #include "citygen/ear_clipping.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -78,6 +79,28 @@ std::optional<ParapetBand> quadBand(const std::vector<LevelPoint>& ring, double 
     return ParapetBand{p0.p, p1.p, q0.p, q1.p};
 }
 
+/// Rings of up to this many vertices get their deck as one inset ring (ear clipping is quadratic).
+constexpr size_t kMaxInsetDeckVertices = 64;
+
+/// The deck as one ring when every face's band is a quad and the footprint has no holes: the bands'
+/// inner corners in ring order (q1 of one band is q0 of the next, bit for bit), ear-clipped: n - 2
+/// triangles instead of one polygon per skeleton face. Empty when that does not apply.
+std::vector<std::array<Vec2d, 3>> insetDeck(const std::vector<ParapetBand>& bands) {
+    if (bands.size() < 3 || bands.size() > kMaxInsetDeckVertices) return {};
+    std::vector<Vec2d> ring{bands[0].q0};
+    Vec2d at = bands[0].p1;
+    for (size_t step = 1; step < bands.size(); ++step) {
+        auto next = std::find_if(bands.begin(), bands.end(), [&](const ParapetBand& b) { return b.p0.x == at.x && b.p0.y == at.y; });
+        if (next == bands.end() || next == bands.begin()) return {};  // more than one ring: holes
+        ring.push_back(next->q0);
+        at = next->p1;
+    }
+    if (at.x != bands[0].p0.x || at.y != bands[0].p0.y) return {};
+    std::vector<std::array<Vec2d, 3>> triangles;
+    for (const auto& t : earClip(ring)) triangles.push_back({ring[t[0]], ring[t[1]], ring[t[2]]});
+    return triangles;
+}
+
 } // namespace
 
 void meshFlatRoof(const FootprintTriangles& footprint, RoofSink& sink) {
@@ -98,6 +121,15 @@ bool meshParapetRoof(const StraightSkeleton& skeleton, double parapetHeight, dou
             quad[f] = true;
             found.push_back(*band);
             rings[f] = std::move(deck);
+        }
+    }
+    if (found.size() == rings.size()) {
+        const std::vector<std::array<Vec2d, 3>> deck = insetDeck(found);
+        if (!deck.empty()) {
+            for (const auto& t : deck)
+                sink.roof(sink.at(t[0], -parapetHeight), sink.at(t[1], -parapetHeight), sink.at(t[2], -parapetHeight));
+            bands.insert(bands.end(), found.begin(), found.end());
+            return true;
         }
     }
     const std::vector<double> cuts{thickness};
