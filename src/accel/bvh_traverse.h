@@ -103,9 +103,11 @@ URBIS_HD inline unsigned intersectLanes(const BvhNode& node, const BvhRay& r, fl
 /// beyond the closest hit so far; any-hit queries return at the first hit.
 /// intersect(uint32_t prim, Ray& ray, Hit& hit) -> bool tests one primitive (prim indexes
 /// leaf order, i.e. positions in the build's primOrder); on a hit it fills hit and shrinks
-/// ray.tmax. Returns whether anything was hit. No allocation; fixed-size stack.
-template <bool AnyHit, typename IntersectPrim>
-URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, IntersectPrim&& intersect) {
+/// ray.tmax. Returns whether anything was hit. No allocation; fixed-size stack. `anyHit` is a
+/// run-time flag so that one inlined copy can serve both queries where code size matters (the GPU
+/// path tracer: see traceScene); the template below fixes it at compile time.
+template <typename IntersectPrim>
+URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect) {
     const BvhRay r(ray);
     struct Entry {
         uint32_t node;
@@ -124,7 +126,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, IntersectPri
             for (uint32_t i = 0; i < node.primCount[l]; ++i) {
                 if (intersect(node.child[l] + i, ray, hit)) {
                     found = true;
-                    if constexpr (AnyHit) return true;
+                    if (anyHit) return true;
                 }
             }
         }
@@ -152,6 +154,11 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, IntersectPri
             }
         }
     }
+}
+
+template <bool AnyHit, typename IntersectPrim>
+URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, IntersectPrim&& intersect) {
+    return traverseBvh(nodes, ray, hit, AnyHit, intersect);
 }
 
 } // namespace urbis

@@ -30,12 +30,13 @@ URBIS_HD inline SurfaceHit triangleSurface(const SceneView& scene, uint32_t prim
             SurfacePart(info.part)};
 }
 
-/// Closest hit over a BVH whose leaves mix kinds (scene.primRefs): a switch per leaf primitive.
-URBIS_HD inline SurfaceHit intersectMixed(const SceneView& scene, Ray& ray) {
+/// Closest hit (or with anyHit the first found) over a BVH whose leaves mix kinds
+/// (scene.primRefs): a switch per leaf primitive.
+URBIS_HD inline SurfaceHit traceMixed(const SceneView& scene, Ray& ray, bool anyHit) {
     const WatertightRay wr(ray);
     Hit hit;
     WallHit wallHit;
-    traverseBvh<false>(scene.geometry.nodes, ray, hit, [&](uint32_t slot, Ray& r, Hit& h) {
+    traverseBvh(scene.geometry.nodes, ray, hit, anyHit, [&](uint32_t slot, Ray& r, Hit& h) {
         const uint32_t ref = scene.primRefs[slot];
         switch (primRefKind(ref)) {
         case PrimKind::Triangle: {
@@ -47,7 +48,7 @@ URBIS_HD inline SurfaceHit intersectMixed(const SceneView& scene, Ray& ray) {
         }
         case PrimKind::Wall: {
             WallHit w;
-            if (!intersectWall<false>(scene.walls[primRefIndex(ref)], r, w)) return false;
+            if (!intersectWall(scene.walls[primRefIndex(ref)], r, w, anyHit)) return false;
             h = {ref, w.t, 0, 0};
             wallHit = w;
             r.tmax = w.t;
@@ -63,18 +64,26 @@ URBIS_HD inline SurfaceHit intersectMixed(const SceneView& scene, Ray& ray) {
     return {SurfaceKind::Wall, hit.t, wallAxisNormal(wall, wallHit.axis), wallHit.material, wall.object, wallHit.part};
 }
 
-/// The closest surface along `ray` within (tmin, tmax).
-URBIS_HD inline SurfaceHit intersectScene(const SceneView& scene, Ray ray) {
+/// The closest surface along `ray` within (tmin, tmax), or with anyHit (a shadow ray) the first
+/// one found: then only valid() means anything (blocked). One function for both queries, so that
+/// the GPU path tracer inlines the traversal and the wall intersector once: two copies overflowed
+/// the H100's instruction cache (docs/gpu_notes.md).
+URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyHit) {
     SurfaceHit out;
+    if (anyHit) {
+        const float tGround = scene.ground.intersect(ray);
+        if (tGround > 0.0f) return {SurfaceKind::Ground, tGround, Vec3f{0, 1, 0}, scene.ground.material, 0, SurfacePart::Whole};
+    }
     if (scene.primRefs) {
-        out = intersectMixed(scene, ray);
+        out = traceMixed(scene, ray, anyHit);
     } else {
-        Hit hit = intersectClosest(scene.geometry, ray);
+        Hit hit = traceTriangles(scene.geometry, ray, anyHit);
         if (hit.valid()) {
             out = triangleSurface(scene, hit.prim, hit.t);
             ray.tmax = hit.t;
         }
     }
+    if (anyHit) return out;
     float tGround = scene.ground.intersect(ray);
     if (tGround > 0.0f) out = {SurfaceKind::Ground, tGround, Vec3f{0, 1, 0}, scene.ground.material, 0, SurfacePart::Whole};
     if (out.valid() && dot(out.normal, ray.dir) > 0.0f) out.normal = -out.normal;
@@ -84,27 +93,10 @@ URBIS_HD inline SurfaceHit intersectScene(const SceneView& scene, Ray ray) {
     return out;
 }
 
+/// The closest surface along `ray` within (tmin, tmax).
+URBIS_HD inline SurfaceHit intersectScene(const SceneView& scene, Ray ray) { return traceScene(scene, ray, false); }
+
 /// Whether anything blocks `ray` within (tmin, tmax).
-URBIS_HD inline bool occludedScene(const SceneView& scene, const Ray& ray) {
-    if (scene.ground.intersect(ray) > 0.0f) return true;
-    if (!scene.primRefs) return occluded(scene.geometry, ray);
-    const WatertightRay wr(ray);
-    Ray r = ray;
-    Hit hit;
-    return traverseBvh<true>(scene.geometry.nodes, r, hit, [&](uint32_t slot, Ray& rr, Hit&) {
-        const uint32_t ref = scene.primRefs[slot];
-        switch (primRefKind(ref)) {
-        case PrimKind::Triangle: {
-            float t, u, v;
-            return intersectTriangle(scene.geometry.triangles[primRefIndex(ref)], rr, wr, t, u, v);
-        }
-        case PrimKind::Wall: {
-            WallHit w;
-            return intersectWall<true>(scene.walls[primRefIndex(ref)], rr, w);
-        }
-        }
-        return false;
-    });
-}
+URBIS_HD inline bool occludedScene(const SceneView& scene, const Ray& ray) { return traceScene(scene, ray, true).valid(); }
 
 } // namespace urbis

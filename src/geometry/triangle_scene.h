@@ -16,13 +16,14 @@ struct TriangleSceneView {
     uint32_t triangleCount;
 };
 
-/// The closest triangle hit with ray.tmin < t < ray.tmax, in world space. Hit::prim is the
-/// index into view.triangles (leaf order); invalid if nothing is hit. Watertight (Woop et
-/// al. 2013) and robust in the BVH (Ize 2013).
-URBIS_HD inline Hit intersectClosest(const TriangleSceneView& view, Ray ray) {
+/// The closest triangle hit with ray.tmin < t < ray.tmax (anyHit false), or the first one found
+/// in any order (anyHit true: a shadow ray), in world space. Hit::prim is the index into
+/// view.triangles (leaf order); invalid if nothing is hit. Watertight (Woop et al. 2013) and
+/// robust in the BVH (Ize 2013).
+URBIS_HD inline Hit traceTriangles(const TriangleSceneView& view, Ray ray, bool anyHit) {
     const WatertightRay wr(ray);
     Hit hit;
-    traverseBvh<false>(view.nodes, ray, hit, [&](uint32_t prim, Ray& r, Hit& h) {
+    traverseBvh(view.nodes, ray, hit, anyHit, [&](uint32_t prim, Ray& r, Hit& h) {
         float t, u, v;
         if (!intersectTriangle(view.triangles[prim], r, wr, t, u, v)) return false;
         h = {prim, t, u, v};
@@ -32,15 +33,9 @@ URBIS_HD inline Hit intersectClosest(const TriangleSceneView& view, Ray ray) {
     return hit;
 }
 
-/// Whether any triangle is hit with ray.tmin < t < ray.tmax (a shadow ray): stops at the
-/// first hit found, in any order.
-URBIS_HD inline bool occluded(const TriangleSceneView& view, Ray ray) {
-    const WatertightRay wr(ray);
-    Hit hit;
-    return traverseBvh<true>(view.nodes, ray, hit, [&](uint32_t prim, Ray& r, Hit&) {
-        float t, u, v;
-        return intersectTriangle(view.triangles[prim], r, wr, t, u, v);
-    });
-}
+URBIS_HD inline Hit intersectClosest(const TriangleSceneView& view, Ray ray) { return traceTriangles(view, ray, false); }
+
+/// Whether any triangle is hit with ray.tmin < t < ray.tmax (a shadow ray).
+URBIS_HD inline bool occluded(const TriangleSceneView& view, Ray ray) { return traceTriangles(view, ray, true).valid(); }
 
 } // namespace urbis

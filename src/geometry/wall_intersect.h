@@ -42,8 +42,9 @@ URBIS_HD inline Vec3f wallAxisNormal(const WallRecord& wall, uint32_t axis) {
 }
 
 /// Tests one part with tmin < t < tmax; on a hit shrinks tmax and fills `hit`. A box is solid:
-/// a ray from inside hits its exit face.
-URBIS_HD inline bool intersectWallPart(const WallPart& p, const WallRay& r, float& tmax, WallHit& hit) {
+/// a ray from inside hits its exit face. Out of line on the GPU: cellParts calls it from some 30
+/// places, and as many inlined copies overflowed the instruction cache.
+URBIS_HD URBIS_DEVICE_NOINLINE inline bool intersectWallPart(const WallPart& p, const WallRay& r, float& tmax, WallHit& hit) {
     constexpr float e = kWallPartPadding;
     if (p.axis != kWallPartBox) {
         const int a = p.axis, b = a == 0 ? 1 : 0, c = a == 2 ? 1 : 2;
@@ -87,15 +88,15 @@ URBIS_HD inline bool intersectWallParts(const CellParts& parts, const WallRay& r
 
 /// An `Out` for cellParts that tests each part as it is made, in the same order as
 /// intersectWallParts over the list would (so the same hit), without storing the list.
-template <bool AnyHit>
 struct WallPartTester {
     const WallRay& r;
     float& tmax;
     WallHit& hit;
+    bool anyHit;
     bool found = false;
 
     URBIS_HD void addQuad(uint8_t axis, Vec3f lo, Vec3f hi, SurfacePart part, uint32_t material) {
-        if (AnyHit && found) return;
+        if (anyHit && found) return;
         found |= intersectWallPart(WallPart{lo, hi, axis, part, material}, r, tmax, hit);
     }
     URBIS_HD void addBox(Vec3f lo, Vec3f hi, SurfacePart part, uint32_t material) {
@@ -184,15 +185,15 @@ URBIS_HD inline bool intersectPunchedFront(const WallRecord& wall, const CellLay
 /// that the ray's segment inside that slab passes through, nearest first, and stops at the first
 /// cell with a hit: every part of a cell lies in the cell's column, so nothing later is closer.
 /// A tile walks the same cells of the same grid as its whole wall, minus those outside it, so the
-/// closest hit over a wall's tiles is the whole wall's.
-template <bool AnyHit>
-URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit) {
+/// closest hit over a wall's tiles is the whole wall's. `anyHit` is a run-time flag (see
+/// traverseBvh); the template below fixes it at compile time.
+URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit, bool anyHit) {
     const WallRay r(wall, ray);
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, r, tmax, hit);
-    if (found && AnyHit) return true;
+    if (found && anyHit) return true;
     found |= intersectWallParapet(wall, r, tmax, hit);
-    if (found && AnyHit) return true;
+    if (found && anyHit) return true;
     const int slot0 = wall.slot0, slotEnd = wall.tileSlotEnd(), floor0 = wall.floor0, floorEnd = wall.tileFloorEnd();
     if (slot0 >= slotEnd || floor0 >= floorEnd) return found;
     // Clip the ray to the tile's column; where it enters the column decides the side of the glass
@@ -239,7 +240,7 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
         if (wall.style == WallStyle::Punched && side == CellSide::Front && !c.balcony &&
             intersectPunchedFront(wall, c, r, tmax, hit))
             return true;
-        WallPartTester<AnyHit> parts{r, tmax, hit};
+        WallPartTester parts{r, tmax, hit, anyHit};
         cellParts(wall, c, side, parts);
         if (parts.found) return true;
         if (tu < tv) {
@@ -255,6 +256,11 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
         }
     }
     return found;
+}
+
+template <bool AnyHit>
+URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit) {
+    return intersectWall(wall, ray, hit, AnyHit);
 }
 
 } // namespace urbis

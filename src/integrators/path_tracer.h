@@ -34,9 +34,21 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
     PathSample out;
     Vec3f throughput{1, 1, 1};
     bool specularBounce = false;   // the camera ray does not show the sun's disk
-    for (uint32_t depth = 0;; ++depth) {
-        SurfaceHit hit = intersectScene(scene, ray);
+    // Each ray of the path, the sun's shadow rays included, is traced at the one call of traceScene
+    // below, so that the GPU kernel holds one copy of the traversal (docs/gpu_notes.md): a pending
+    // shadow ray is traced first, then the path goes on (or ends, if `pathEnds`).
+    Ray shadow;
+    Vec3f sunlight;                // what the pending shadow ray adds if nothing blocks it
+    bool shadowPending = false, pathEnds = false;
+    for (uint32_t depth = 0;;) {
+        const SurfaceHit hit = traceScene(scene, shadowPending ? shadow : ray, shadowPending);
         ++out.rays;
+        if (shadowPending) {
+            if (!hit.valid()) out.radiance += sunlight;
+            shadowPending = false;
+            if (pathEnds) break;
+            continue;
+        }
         if (!hit.valid()) {
             out.radiance += throughput * scene.sky.radiance(ray.dir);
             // Light sampling cannot reach the disk through a mirror or glass: count it here.
@@ -56,25 +68,35 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             Vec3f toSun = scene.sun.sampleDirection(u1, u2);
             Vec3f fCos = evalBsdfCos(material, wo, toSun, normal);
             if (maxComponent(fCos) > 0.0f) {
-                Ray shadow{offsetRayOrigin(position, normal), toSun};
-                ++out.rays;
-                if (!occludedScene(scene, shadow)) out.radiance += throughput * fCos * scene.sun.radiance * (1.0f / scene.sun.pdf());
+                shadow = Ray{offsetRayOrigin(position, normal), toSun};
+                sunlight = throughput * fCos * scene.sun.radiance * (1.0f / scene.sun.pdf());
+                shadowPending = true;
             }
         }
-        if (depth + 1 >= settings.maxDepth) break;
-
-        float u3 = rng.draw(), u4 = rng.draw();
-        float u5 = material.kind == MaterialKind::Lambertian ? 0.0f : rng.draw();
+        // The path goes on unless it is deep enough, is absorbed or loses the Russian roulette.
         BsdfSample bsdf;
-        if (!sampleBsdf(material, wo, normal, u5, u3, u4, bsdf)) break;
-        throughput *= bsdf.weight;
-        specularBounce = bsdf.specular;
-        if (depth + 1 >= settings.rrDepth) {
-            float survival = fminf(maxComponent(throughput), settings.rrSurvival);
-            if (rng.draw() >= survival) break;
-            throughput *= 1.0f / survival;
+        bool goesOn = depth + 1 < settings.maxDepth;
+        if (goesOn) {
+            float u3 = rng.draw(), u4 = rng.draw();
+            float u5 = material.kind == MaterialKind::Lambertian ? 0.0f : rng.draw();
+            goesOn = sampleBsdf(material, wo, normal, u5, u3, u4, bsdf);
+        }
+        if (goesOn) {
+            throughput *= bsdf.weight;
+            specularBounce = bsdf.specular;
+            if (depth + 1 >= settings.rrDepth) {
+                float survival = fminf(maxComponent(throughput), settings.rrSurvival);
+                goesOn = rng.draw() < survival;
+                throughput *= 1.0f / survival;
+            }
+        }
+        if (!goesOn) {
+            pathEnds = true;
+            if (shadowPending) continue;
+            break;
         }
         ray = Ray{offsetRayOrigin(position, dot(bsdf.dir, normal) > 0.0f ? normal : -normal), bsdf.dir};
+        ++depth;
     }
     return out;
 }
