@@ -30,15 +30,14 @@ URBIS_HD inline SurfaceHit triangleSurface(const SceneView& scene, uint32_t prim
             SurfacePart(info.part)};
 }
 
-/// Closest hit (or with anyHit the first found) over a BVH whose leaves mix kinds (scene.primRefs;
-/// without them every leaf slot is a triangle): a switch per leaf primitive. One traversal for
-/// every scene keeps one traversal stack and one copy of the loop in a GPU kernel.
+/// Closest hit (or with anyHit the first found) over a BVH whose leaves mix kinds
+/// (scene.primRefs): a switch per leaf primitive.
 URBIS_HD inline SurfaceHit traceMixed(const SceneView& scene, Ray& ray, bool anyHit) {
     const WatertightRay wr(ray);
     Hit hit;
     WallHit wallHit;
     traverseBvh(scene.geometry.nodes, ray, hit, anyHit, [&](uint32_t slot, Ray& r, Hit& h) {
-        const uint32_t ref = scene.primRefs ? scene.primRefs[slot] : makePrimRef(PrimKind::Triangle, slot);
+        const uint32_t ref = scene.primRefs[slot];
         switch (primRefKind(ref)) {
         case PrimKind::Triangle: {
             float t, u, v;
@@ -75,7 +74,15 @@ URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyH
         const float tGround = scene.ground.intersect(ray);
         if (tGround > 0.0f) return {SurfaceKind::Ground, tGround, Vec3f{0, 1, 0}, scene.ground.material, 0, SurfacePart::Whole};
     }
-    out = traceMixed(scene, ray, anyHit);
+    if (scene.primRefs) {
+        out = traceMixed(scene, ray, anyHit);
+    } else {
+        Hit hit = traceTriangles(scene.geometry, ray, anyHit);
+        if (hit.valid()) {
+            out = triangleSurface(scene, hit.prim, hit.t);
+            ray.tmax = hit.t;
+        }
+    }
     if (anyHit) return out;
     float tGround = scene.ground.intersect(ray);
     if (tGround > 0.0f) out = {SurfaceKind::Ground, tGround, Vec3f{0, 1, 0}, scene.ground.material, 0, SurfacePart::Whole};
