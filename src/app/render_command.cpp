@@ -214,8 +214,10 @@ void runRender(const RenderOptions& o) {
         {"triangles", scene.triangles.size()},
         {"triangles_by_kind", cityMesh.trianglesByKind},
         {"geometry", {{"walls", representationName(prepared.geometry.walls)},
-                      // Procedural roofs are not written yet: roofs are stored triangles in both modes.
-                      {"roofs", representationName(Representation::Triangles)}}},
+                      // Of the roofs only the parapets are procedural; plain roofs are stored triangles.
+                      {"roofs", representationName(prepared.geometry.roofs == Representation::Procedural
+                                                       ? Representation::Procedural
+                                                       : Representation::Triangles)}}},
         {"walls", scene.walls.empty() ? size_t(0) : cityMesh.facadeWalls},
         {"wall_tiles", scene.walls.size()},
         {"wall_tile_size", o.wallTiles},

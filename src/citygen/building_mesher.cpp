@@ -104,13 +104,19 @@ void putParapetOnWall(const ParapetBand& band, const RoofResult& roof, Vec2d a, 
 
 /// One wall per ring edge: a procedural wall record where the edge is large enough for a facade
 /// (and `facade` is given), else a plain quad of two triangles. The edge's parapet band goes on its
-/// wall record, or is meshed.
+/// wall record where there is one and parapets are procedural, else it is meshed.
 void addWalls(const Ring& ring, bool isHole, const Ring& outer, double bottom, const RoofResult& roof,
               const ParapetBands& bands, const RoofSink& roofSink, TriangleInfo info, const WallContext* facade,
               uint32_t& wallIndex, TriangleMesh& mesh, std::vector<WallRecord>& walls, BuildingTriangleCounts& counts) {
     const double top = roof.wallTop;
     const double area = signedArea2(ring);
     const bool outsideRight = isHole ? area < 0.0 : area > 0.0;
+    auto meshBand = [&](const ParapetBand* band) {
+        if (!band) return;
+        RoofSink sink = roofSink;
+        meshParapetBand(*band, roof.parapetHeight, sink);
+        counts.walls += sink.wallTriangles;
+    };
     for (size_t i = 0; i < ring.size(); ++i) {
         Vec2d a = ring[i], b = ring[(i + 1) % ring.size()];
         const uint32_t index = wallIndex++;
@@ -122,7 +128,8 @@ void addWalls(const Ring& ring, bool isHole, const Ring& outer, double bottom, c
             WallRecord wall;
             if (layoutWall(*facade, a, b, outsideRight, float(bottom), float(top), depthBehind(outer, a, outward),
                            float(roof.parapetHeight), index, wall)) {
-                if (band) putParapetOnWall(*band, roof, a, b, wall);
+                if (band && facade->proceduralParapets) putParapetOnWall(*band, roof, a, b, wall);
+                else meshBand(band);
                 walls.push_back(wall);
                 ++counts.wallRecords;
                 continue;
@@ -134,11 +141,7 @@ void addWalls(const Ring& ring, bool isHole, const Ring& outer, double bottom, c
         mesh.add({a0, b1, a1}, info);
         counts.walls += 2;
         ++counts.plainWalls;
-        if (band) {
-            RoofSink sink = roofSink;
-            meshParapetBand(*band, roof.parapetHeight, sink);
-            counts.walls += sink.wallTriangles;
-        }
+        meshBand(band);
     }
 }
 

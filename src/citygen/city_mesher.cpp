@@ -103,7 +103,10 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     out.materials = std::move(table.materials);
     const uint32_t facadeMaterials = uint32_t(out.materials.size());
     addFacadeMaterials(out.materials);
-    for (WallContext& f : facades) f.facadeMaterials = facadeMaterials;
+    for (WallContext& f : facades) {
+        f.facadeMaterials = facadeMaterials;
+        f.proceduralParapets = options.geometry.roofs == Representation::Procedural;
+    }
 
     std::vector<Chunk> chunks((city.buildings.size() + kChunk - 1) / kChunk);
     tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {

@@ -17,6 +17,9 @@ struct WallContext {
     uint32_t object = 0;           ///< building index + 1
     uint32_t wallMaterial = 0;
     uint32_t facadeMaterials = 0;  ///< first of FacadeMaterial::Count
+    /// Flat roofs' parapets ride on the wall records (--geometry roofs=procedural), else they are
+    /// stored triangles.
+    bool proceduralParapets = true;
 };
 
 /// The wall on the footprint edge from `a` to `b` (city plane, metres) between heights `bottom` and

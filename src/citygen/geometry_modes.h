@@ -10,8 +10,8 @@ namespace urbis {
 /// and the stored-triangle scenes that other ray tracers can be compared on).
 enum class Representation : unsigned char { Procedural, Triangles, Plain };
 
-/// One representation per kind. Roofs are stored triangles until procedural roofs exist; the
-/// choice is kept so that they can follow it then.
+/// One representation per kind. Of the roofs only flat roofs' parapets are procedural (on the
+/// walls' records); decks and the other shapes are stored triangles in every mode.
 struct GeometryModes {
     Representation walls = Representation::Procedural;   ///< facades
     Representation roofs = Representation::Procedural;
