@@ -28,7 +28,7 @@ URBIS_HD inline Vec3f evalBsdfCos(const Material& m, Vec3f wo, Vec3f wi, Vec3f n
     Vec3f f = m.albedo * (1.0f / kPi);
     if (m.kind == MaterialKind::Glossy) {
         float c = fmaxf(0.0f, dot(wi, reflect(wo, n)));
-        f += m.specular * ((m.exponent + 2.0f) / (2.0f * kPi) * powf(c, m.exponent));
+        f += m.specular * ((m.exponent + 2.0f) / (2.0f * kPi) * powPositive(c, m.exponent));
     }
     return f * cosine;
 }

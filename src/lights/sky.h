@@ -3,6 +3,7 @@
 // The physically based atmosphere of DESIGN.md replaces it later behind the same lookup.
 #pragma once
 
+#include "math/kernel_math.h"
 #include "math/vec.h"
 
 namespace urbis {
@@ -16,7 +17,7 @@ struct Sky {
     /// Radiance seen along a unit world direction (y up).
     URBIS_HD Vec3f radiance(Vec3f dir) const {
         if (dir.y < 0.0f) return ground;
-        float w = powf(dir.y, exponent);
+        float w = powPositive(dir.y, exponent);
         return horizon * (1.0f - w) + zenith * w;
     }
     /// A sky of the same radiance in every direction.
