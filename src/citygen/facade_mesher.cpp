@@ -47,22 +47,22 @@ void addParts(const WallRecord& wall, const CellParts& parts, TriangleMesh& mesh
     }
 }
 
-/// The parapet's top and inner face, two triangles each (ParapetCorners).
+/// The parapet's top and inner face (wall_parapet.h), two triangles each.
 size_t parapetTriangles(const WallRecord& wall) { return wall.parapetHeight > 0.0f ? 4 : 0; }
 
 void addParapet(const WallRecord& wall, TriangleMesh& mesh) {
     if (!parapetTriangles(wall)) return;
-    const ParapetCorners corners = parapetCorners(wall);
+    const ParapetTop top = parapetTop(wall);
+    Vec3f p[4];
+    for (int k = 0; k < 4; ++k) p[k] = wall.worldFromWall(top.corners[k].x, top.corners[k].y, top.corners[k].z);
     TriangleInfo info;
     info.material = wall.wallMaterial;
     info.object = wall.object;
     info.part = uint32_t(SurfacePart::Facade);
-    for (const Vec3f* q : {corners.top, corners.inner}) {
-        Vec3f p[4];
-        for (int k = 0; k < 4; ++k) p[k] = wall.worldFromWall(q[k].x, q[k].y, q[k].z);
-        mesh.add({p[0], p[1], p[2]}, info);
-        mesh.add({p[0], p[2], p[3]}, info);
-    }
+    mesh.add({p[0], p[1], p[2]}, info);
+    mesh.add({p[0], p[2], p[3]}, info);
+    const WallPart inner = parapetInnerFace(wall);
+    addQuad(wall, inner, inner.axis, inner.lo[inner.axis], mesh);
 }
 
 } // namespace

@@ -126,31 +126,23 @@ URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const WallRay&
 URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const WallRay& r, float& tmax, WallHit& hit) {
     if (!(wall.parapetHeight > 0.0f) || wall.tileFloorEnd() < int(wall.floors)) return false;
     constexpr float e = kWallPartPadding;
-    const float uLo = wall.slot0 == 0 ? -3.0e38f : wall.tileU0() - e;
-    const float uHi = wall.tileSlotEnd() >= int(wall.slots) ? 3.0e38f : wall.tileU1() + e;
-    const float inner = -wall.parapetThickness;
+    const float uLo = wall.slot0 == 0 ? -3.0e38f : wall.tileU0();
+    const float uHi = wall.tileSlotEnd() >= int(wall.slots) ? 3.0e38f : wall.tileU1();
     bool found = false;
     if (r.d.y != 0.0f) {
         const float t = (wall.height - r.o.y) * r.invD.y;
         const float u = r.o.x + t * r.d.x, w = r.o.z + t * r.d.z;
-        if (t > r.tmin && t < tmax && w >= inner - e && w <= e && u >= fmaxf(uLo, parapetStartAt(wall, w) - e) &&
-            u <= fminf(uHi, parapetEndAt(wall, w) + e)) {
+        if (t > r.tmin && t < tmax && w >= -wall.parapetThickness - e && w <= e &&
+            u >= fmaxf(uLo, parapetStartAt(wall, w)) - e && u <= fminf(uHi, parapetEndAt(wall, w)) + e) {
             tmax = t;
             hit = {t, 1u, wall.wallMaterial, SurfacePart::Facade};
             found = true;
         }
     }
-    if (r.d.z != 0.0f) {
-        const float t = (inner - r.o.z) * r.invD.z;
-        const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
-        if (t > r.tmin && t < tmax && v >= wall.height - wall.parapetHeight - e && v <= wall.height + e &&
-            u >= fmaxf(uLo, wall.parapetInner0 - e) && u <= fminf(uHi, wall.parapetInner1 + e)) {
-            tmax = t;
-            hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
-            found = true;
-        }
-    }
-    return found;
+    WallPart inner = parapetInnerFace(wall);
+    inner.lo.x = fmaxf(inner.lo.x, uLo);
+    inner.hi.x = fminf(inner.hi.x, uHi);
+    return intersectWallPart(inner, r, tmax, hit) || found;
 }
 
 /// The common case of a punched cell without a balcony, for a ray in front of the glass: where the

@@ -1,24 +1,30 @@
 // The parapet on a procedural wall's top (host+device): two faces in wall coordinates, its top (a
 // trapezoid between the wall plane and the deck's edge, mitred where the neighbouring walls'
-// parapets meet it) and its inner face down to the deck. The triangle twin meshes the corners below;
-// the intersector tests the same faces as plane crossings.
+// parapets meet it) and its inner face down to the deck. The triangle twin meshes the top's corners
+// and the inner face's quad; the intersector tests the same faces.
 #pragma once
 
-#include "geometry/wall_record.h"
+#include "geometry/wall_parts.h"
 
 namespace urbis {
 
-/// The corners of a wall's parapet in wall coordinates (u, v, w): `top` counter-clockwise seen from
-/// above (wall plane first), `inner` the inner face (bottom edge first).
-struct ParapetCorners {
-    Vec3f top[4];
-    Vec3f inner[4];
+/// The corners of the parapet's top in wall coordinates (u, v, w), counter-clockwise seen from
+/// above, the wall plane's first.
+struct ParapetTop {
+    Vec3f corners[4];
 };
 
-URBIS_HD inline ParapetCorners parapetCorners(const WallRecord& wall) {
-    const float h = wall.height, deck = wall.height - wall.parapetHeight, w = -wall.parapetThickness;
-    const float a = wall.parapetInner0, b = wall.parapetInner1;
-    return {{{0, h, 0}, {wall.width, h, 0}, {b, h, w}, {a, h, w}}, {{a, deck, w}, {b, deck, w}, {b, h, w}, {a, h, w}}};
+URBIS_HD inline ParapetTop parapetTop(const WallRecord& wall) {
+    const float h = wall.height, w = -wall.parapetThickness;
+    return {{{0, h, 0}, {wall.width, h, 0}, {wall.parapetInner1, h, w}, {wall.parapetInner0, h, w}}};
+}
+
+/// The parapet's inner face, from the deck up, as a cell part: the same quad for the intersector
+/// and the twin.
+URBIS_HD inline WallPart parapetInnerFace(const WallRecord& wall) {
+    const float w = -wall.parapetThickness;
+    return {{wall.parapetInner0, wall.height - wall.parapetHeight, w}, {wall.parapetInner1, wall.height, w}, 2,
+            SurfacePart::Facade, wall.wallMaterial};
 }
 
 /// u of the parapet's top edge at wall depth w (in [-thickness, 0]): its start and end, along the
