@@ -49,15 +49,7 @@ struct DeviceScene {
 
     /// What kernels read: the same SceneView the CPU backend gets, over device pointers.
     SceneView view() const {
-        return SceneView{TriangleSceneView{nodes.data(), triangles.data(), uint32_t(triangles.size())},
-                         triangleInfo.data(),
-                         primRefs.size() == 0 ? nullptr : primRefs.data(),
-                         walls.data(),
-                         uint32_t(walls.size()),
-                         materials.data(),
-                         ground,
-                         sun,
-                         sky};
+        return makeSceneView(nodes, triangles, triangleInfo, primRefs, walls, materials, ground, sun, sky);
     }
 };
 

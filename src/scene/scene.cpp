@@ -88,15 +88,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
 }
 
 SceneView Scene::view() const {
-    return SceneView{TriangleSceneView{nodes.data(), triangles.data(), uint32_t(triangles.size())},
-                     info.data(),
-                     primRefs.empty() ? nullptr : primRefs.data(),
-                     walls.data(),
-                     uint32_t(walls.size()),
-                     materials.data(),
-                     ground,
-                     sun,
-                     sky};
+    return makeSceneView(nodes, triangles, info, primRefs, walls, materials, ground, sun, sky);
 }
 
 SceneMemory Scene::memory() const {

@@ -18,11 +18,25 @@ struct SceneView {
     /// then a leaf slot is the triangle's index.
     const uint32_t* primRefs;
     const WallRecord* walls;             ///< procedural walls, in the order their leaves reach them
-    uint32_t wallCount;
     const Material* materials;
     GroundPlane ground;
     Sun sun;
     Sky sky;
 };
+
+/// The view of a scene's arrays, host vectors or device buffers alike (anything with data() and
+/// size()); an empty primRefs becomes null.
+SceneView makeSceneView(const auto& nodes, const auto& triangles, const auto& triangleInfo, const auto& primRefs,
+                        const auto& walls, const auto& materials, const GroundPlane& ground, const Sun& sun,
+                        const Sky& sky) {
+    return SceneView{TriangleSceneView{nodes.data(), triangles.data(), uint32_t(triangles.size())},
+                     triangleInfo.data(),
+                     primRefs.size() == 0 ? nullptr : primRefs.data(),
+                     walls.data(),
+                     materials.data(),
+                     ground,
+                     sun,
+                     sky};
+}
 
 } // namespace urbis
