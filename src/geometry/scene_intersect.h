@@ -30,6 +30,11 @@ URBIS_HD inline SurfaceHit triangleSurface(const SceneView& scene, uint32_t prim
             SurfacePart(info.part)};
 }
 
+/// The ground plane hit at `t` as a surface hit.
+URBIS_HD inline SurfaceHit groundSurface(const SceneView& scene, float t) {
+    return {SurfaceKind::Ground, t, Vec3f{0, 1, 0}, scene.ground.material, 0, SurfacePart::Whole};
+}
+
 /// Closest hit (or with anyHit the first found) over a BVH whose leaves mix kinds
 /// (scene.primRefs): a switch per leaf primitive.
 URBIS_HD inline SurfaceHit traceMixed(const SceneView& scene, Ray& ray, bool anyHit) {
@@ -72,7 +77,7 @@ URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyH
     SurfaceHit out;
     if (anyHit) {
         const float tGround = scene.ground.intersect(ray);
-        if (tGround > 0.0f) return {SurfaceKind::Ground, tGround, Vec3f{0, 1, 0}, scene.ground.material, 0, SurfacePart::Whole};
+        if (tGround > 0.0f) return groundSurface(scene, tGround);
     }
     if (scene.primRefs) {
         out = traceMixed(scene, ray, anyHit);
@@ -85,7 +90,7 @@ URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyH
     }
     if (anyHit) return out;
     float tGround = scene.ground.intersect(ray);
-    if (tGround > 0.0f) out = {SurfaceKind::Ground, tGround, Vec3f{0, 1, 0}, scene.ground.material, 0, SurfacePart::Whole};
+    if (tGround > 0.0f) out = groundSurface(scene, tGround);
     if (out.valid() && dot(out.normal, ray.dir) > 0.0f) out.normal = -out.normal;
     // -0 + 0 is +0: signed zeros differ between a wall's exact axes and its twin's cross products, and
     // the shading frame (Frame::fromZ) branches on the sign of z, so both would sample differently.
