@@ -1,6 +1,7 @@
 // The wall intersector's grid walk (2D DDA) against brute force over every part of every cell, on
 // millions of random rays: from anywhere, nearly parallel to the wall, grazing its slab, starting
 // inside a room or on a balcony.
+#include "facade_test_walls.h"
 #include "geometry/wall_intersect.h"
 
 #include <gtest/gtest.h>
@@ -8,36 +9,28 @@
 #include <random>
 
 using namespace urbis;
+using namespace urbis::test;
 
 namespace {
 
 /// A diagonal wall of 5 slots x 6 floors with balconies and shop windows, or a curtain wall.
 WallRecord testWall(WallStyle style) {
     WallRecord w;
+    giveTestFacade(style, w);
     w.origin = {1203.5f, 4.0f, -2210.25f};
     w.axisU = normalize(Vec3f{0.8f, 0, -0.6f});
     w.normal = Vec3f{-w.axisU.z, 0, w.axisU.x};
     w.width = 17.0f;
     w.height = 20.1f;
-    w.gridU = 0.5f;
-    w.gridV = 0.3f;
     w.slots = 5;
     w.floors = 6;
     w.slotWidth = 16.0f / 5.0f;
     w.floorHeight = 19.2f / 6.0f;
     w.windowWidth = 1.5f;
     w.windowHeight = 1.5f;
-    w.sillHeight = 0.9f;
-    w.reveal = style == WallStyle::Curtain ? 0.1f : 0.2f;
-    w.depthBack = 3.0f;
-    w.depthFront = style == WallStyle::Curtain ? 0.12f : 1.2f;
     w.object = 7;
     w.wallIndex = 3;
     w.seed = 12345;
-    w.wallMaterial = 1;
-    w.facadeMaterials = 2;
-    w.style = style;
-    w.flags = kWallBalconies | kWallShopFront;
     return w;
 }
 

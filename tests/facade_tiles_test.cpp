@@ -2,6 +2,7 @@
 // rays, the closest hit over its tiles (taken as a BVH would, shrinking tmax tile by tile, in any
 // order) is the whole wall's, bit for bit, and so is whether any tile is hit at all.
 #include "citygen/city_mesher.h"
+#include "facade_test_walls.h"
 #include "cpu/cpu_renderer.h"
 #include "geometry/wall_intersect.h"
 #include "integrators/primary_id.h"
@@ -15,6 +16,7 @@
 #include <random>
 
 using namespace urbis;
+using namespace urbis::test;
 
 namespace {
 
@@ -22,6 +24,7 @@ namespace {
 /// windows, or a curtain wall.
 WallRecord bigWall(WallStyle style) {
     WallRecord w;
+    giveTestFacade(style, w);
     w.origin = {-812.25f, 2.0f, 1530.5f};
     w.axisU = normalize(Vec3f{0.6f, 0, 0.8f});
     w.normal = Vec3f{w.axisU.z, 0, -w.axisU.x};
@@ -29,23 +32,13 @@ WallRecord bigWall(WallStyle style) {
     w.floors = 11;
     w.slotWidth = 3.1f;
     w.floorHeight = 3.3f;
-    w.gridU = 0.5f;
-    w.gridV = 0.3f;
     w.width = w.gridWidth() + 1.0f;
     w.height = w.gridHeight() + 0.9f;
     w.windowWidth = 1.4f;
     w.windowHeight = 1.6f;
-    w.sillHeight = 0.9f;
-    w.reveal = style == WallStyle::Curtain ? 0.1f : 0.2f;
-    w.depthBack = 3.0f;
-    w.depthFront = style == WallStyle::Curtain ? 0.12f : 1.2f;
     w.object = 5;
     w.wallIndex = 2;
     w.seed = 987654;
-    w.wallMaterial = 1;
-    w.facadeMaterials = 2;
-    w.style = style;
-    w.flags = kWallBalconies | kWallShopFront;
     return w;
 }
 
