@@ -160,6 +160,7 @@ WallTileSize wallTileSize(const std::string& text) {
 PreparedScene prepareScene(const RenderOptions& o) {
     PreparedScene p;
     Sun sun = daySun(o);
+    const WallTileSize tileSize = wallTileSize(o.wallTiles);
     CityMeshOptions meshOptions;
     meshOptions.geometry = p.geometry = parseGeometryModes(o.geometry);
     auto t0 = Clock::now();
@@ -172,7 +173,7 @@ PreparedScene prepareScene(const RenderOptions& o) {
     p.secondsCitygen = secondsSince(t0);
 
     t0 = Clock::now();
-    p.scene = Scene::build(p.mesh.mesh, p.mesh.materials, p.mesh.walls, wallTileSize(o.wallTiles));
+    p.scene = Scene::build(p.mesh.mesh, p.mesh.materials, p.mesh.walls, tileSize);
     p.scene.ground = GroundPlane{0.0f, p.mesh.groundMaterial, true};
     p.scene.sun = sun;
     p.secondsBvh = secondsSince(t0);
@@ -184,7 +185,6 @@ PreparedScene prepareScene(const RenderOptions& o) {
 void runRender(const RenderOptions& o) {
     size_t threads = o.threads ? o.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
-    wallTileSize(o.wallTiles);
     checkOutputFolder(o.outFile);
     checkOutputFolder(o.statsFile);
 
