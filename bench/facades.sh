@@ -10,7 +10,8 @@
 # fit in memory is reported as such (urbis refuses it before building). FACADES_DEVICE=cuda runs
 # both representations on the GPU (default: cpu). FACADES_MODES="procedural" runs only that
 # representation (default: "procedural triangles"); FACADES_CITIES="generated" only that city;
-# FACADES_EXTRA is added to every urbis command (e.g. "--wall-tiles 4x4").
+# FACADES_HEIGHTS="20 40" only those target heights (default "20 40 80"); FACADES_EXTRA is added
+# to every urbis command (e.g. "--wall-tiles 4x4").
 set -u
 BUILD=${1:-build}
 OUT=${2:-bench/out}
@@ -19,6 +20,7 @@ SIZE=${FACADES_SIZE:-"--width 640 --height 360 --spp 4"}
 DEVICE=${FACADES_DEVICE:-cpu}
 MODES=${FACADES_MODES:-"procedural triangles"}
 CITIES=${FACADES_CITIES:-"sf generated"}
+HEIGHTS=${FACADES_HEIGHTS:-"20 40 80"}
 EXTRA=${FACADES_EXTRA:-}
 mkdir -p "$OUT"
 
@@ -50,7 +52,7 @@ PY
 }
 
 # Mean heights at scale 1 (counts.mean_building_height of a stats run): SF 31.6 m, the generated city 12.1 m.
-for target in 20 40 80; do
+for target in $HEIGHTS; do
     run sf "$SF" "$SF_CAMERA" "$(python3 -c "print($target / 31.6)")" "$target"
     run generated "$GEN" "$GEN_CAMERA" "$(python3 -c "print($target / 12.1)")" "$target"
 done

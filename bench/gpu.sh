@@ -5,7 +5,8 @@
 # ./gpu-out): gpu.log, bench_*.json, sf_gpu.png. Dependencies: $URBIS_DEPS (default ./.deps) with
 # root/usr (headers and libraries, dpkg -x) and data/ (sf_downtown_2023.osm.pbf, the Bavarian village).
 # Usage: bench/gpu.sh [steps], steps a comma list of build,test,bench,cpu (default all).
-# Environment: URBIS_BUILD_DIR (build), URBIS_CUDA_FMAD (OFF), URBIS_TAG (suffix of the JSON names), JOBS.
+# Environment: URBIS_BUILD_DIR (build), URBIS_CUDA_FMAD (OFF), URBIS_CUDA_FLAGS (extra nvcc flags, e.g.
+# -lineinfo for Nsight Compute's source view), URBIS_TAG (suffix of the JSON names), JOBS.
 set -uo pipefail
 STEPS=",${1:-build,test,bench,cpu},"
 OUT=${OUT:-$PWD/gpu-out}
@@ -35,7 +36,8 @@ if [[ $STEPS == *,build,* ]]; then
   say build
   run nvidia-smi --query-gpu=name,memory.total,clocks.sm,clocks.max.sm --format=csv
   run cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$DEPS/root/usr" -DURBIS_BUILD_BENCH=OFF \
-      -DURBIS_CUDA_RESOURCE_USAGE=ON -DURBIS_CUDA_FMAD="$FMAD" "${EXPAT_ARGS[@]}" || exit 1
+      -DURBIS_CUDA_RESOURCE_USAGE=ON -DURBIS_CUDA_FMAD="$FMAD" -DCMAKE_CUDA_FLAGS="${URBIS_CUDA_FLAGS:-}" \
+      "${EXPAT_ARGS[@]}" || exit 1
   run cmake --build "$BUILD" -j"$JOBS" || exit 1
   grep -E "ptxas info|stack frame" "$LOG" | tail -8
 fi

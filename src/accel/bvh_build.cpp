@@ -54,6 +54,7 @@ float halfArea(const Bounds3f& box) {
 struct Bin {
     Bounds3f bounds;
     uint32_t count = 0;
+    uint32_t cost = 0;   ///< the primitives' intersection costs, in units of intersectionCost
 };
 
 /// SAH bins on the three axes. Merging takes counts and min/max only, so a parallel
@@ -66,6 +67,7 @@ struct BinSet {
             for (uint32_t i = 0; i < binCount; ++i) {
                 grow(bins[axis][i].bounds, other.bins[axis][i].bounds);
                 bins[axis][i].count += other.bins[axis][i].count;
+                bins[axis][i].cost += other.bins[axis][i].cost;
             }
     }
 };
@@ -87,13 +89,15 @@ struct Split {
     int axis = -1;      ///< -1: no SAH split found
     uint32_t bin = 0;   ///< primitives in bins [0, bin) go left
     float cost = 0;
+    uint32_t primCost = 0;   ///< the node's primitives' intersection costs (a leaf's cost), in units
     Bounds3f leftBounds, rightBounds;
 };
 
 class Builder {
 public:
-    Builder(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options, Bvh& bvh)
-        : bounds_(primBounds), options_(options), order_(bvh.primOrder) {
+    Builder(const std::vector<Bounds3f>& primBounds, const std::vector<uint32_t>& primCosts,
+            const BvhBuildOptions& options, Bvh& bvh)
+        : bounds_(primBounds), costs_(primCosts), options_(options), order_(bvh.primOrder) {
         const uint32_t n = static_cast<uint32_t>(primBounds.size());
         centroids_.resize(n);
         order_.resize(n);
@@ -168,6 +172,7 @@ private:
                 Bin& bin = set.bins[axis][map.binOf(c[axis], axis)];
                 grow(bin.bounds, bounds_[prim]);
                 ++bin.count;
+                bin.cost += costs_.empty() ? 1u : costs_[prim];
             }
         }
     }
@@ -193,30 +198,33 @@ private:
         const BinSet set = fillBins(b, e, map);
         const uint32_t nb = map.binCount;
         Split best;
+        for (uint32_t i = 0; i < nb; ++i) best.primCost += set.bins[0][i].cost;
         for (int axis = 0; axis < 3; ++axis) {
             if (map.scale[axis] == 0.0f) continue;
             const Bin* bins = set.bins[axis];
             // Sweep from the right: cost of the right side for every split position.
             float rightCost[kMaxBins];
             Bounds3f acc;
-            uint32_t count = 0;
+            uint32_t count = 0, cost = 0;
             for (uint32_t i = nb - 1; i > 0; --i) {
                 grow(acc, bins[i].bounds);
                 count += bins[i].count;
-                rightCost[i] = count > 0 ? halfArea(acc) * float(count) : -1.0f;
+                cost += bins[i].cost;
+                rightCost[i] = count > 0 ? halfArea(acc) * float(cost) : -1.0f;
             }
             acc = Bounds3f{};
-            count = 0;
+            count = cost = 0;
             for (uint32_t i = 1; i < nb; ++i) {
                 grow(acc, bins[i - 1].bounds);
                 count += bins[i - 1].count;
+                cost += bins[i - 1].cost;
                 if (count == 0 || rightCost[i] < 0.0f) continue;
-                const float cost = options_.traversalCost +
-                                   options_.intersectionCost * (halfArea(acc) * float(count) + rightCost[i]) / nodeHalfArea;
-                if (best.axis < 0 || cost < best.cost) {
+                const float splitCost = options_.traversalCost +
+                                        options_.intersectionCost * (halfArea(acc) * float(cost) + rightCost[i]) / nodeHalfArea;
+                if (best.axis < 0 || splitCost < best.cost) {
                     best.axis = axis;
                     best.bin = i;
-                    best.cost = cost;
+                    best.cost = splitCost;
                 }
             }
         }
@@ -244,7 +252,7 @@ private:
         uint32_t mid;
         if (splittable && depth < kMedianSplitDepth) {
             const Split split = findSplit(b, e, map, halfArea(box));
-            const float leafCost = options_.intersectionCost * float(count);
+            const float leafCost = options_.intersectionCost * float(split.primCost);
             if (split.axis < 0 || (count <= options_.maxLeafSize && leafCost <= split.cost)) {
                 if (count <= options_.maxLeafSize) {
                     slots_[slot] = makeNode(box, b, count);
@@ -300,6 +308,7 @@ private:
     }
 
     const std::vector<Bounds3f>& bounds_;
+    const std::vector<uint32_t>& costs_;
     const BvhBuildOptions& options_;
     std::vector<uint32_t>& order_;
     std::vector<Vec3f> centroids_;
@@ -378,13 +387,14 @@ std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary) {
 
 } // namespace
 
-Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options) {
+Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options,
+             const std::vector<uint32_t>& primCosts) {
     Bvh bvh;
     if (primBounds.empty()) {
         bvh.nodes.push_back(emptyWideNode());
         return bvh;
     }
-    Builder builder(primBounds, options, bvh);
+    Builder builder(primBounds, primCosts, options, bvh);
     builder.run();
     bvh.nodes = collapse(builder.compact());
     return bvh;

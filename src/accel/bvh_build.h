@@ -32,7 +32,11 @@ struct Bvh {
 /// are built in parallel with TBB; the result is the same for any thread count. The tree
 /// stays under 64 levels (object-median splits from depth 32 on), so traversal stacks of
 /// kBvhStackSize never overflow. An empty input gives one empty node that no ray hits.
-Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options = {});
+/// `primCosts` weighs each primitive's intersection cost in units of intersectionCost (empty: 1
+/// each), so that expensive primitives (procedural walls) get leaves of their own. Integers keep
+/// the parallel build deterministic.
+Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options = {},
+             const std::vector<uint32_t>& primCosts = {});
 
 /// The SAH cost of a built BVH: traversalCost per node visited and intersectionCost per
 /// primitive tested, each weighted by its box's area relative to the root's.

@@ -36,6 +36,36 @@ struct WallRay {
     }
 };
 
+/// The part of a ray's segment (t0, t1) inside slabs of wall coordinates, clipped one axis at a time.
+struct SegmentClip {
+    float t0, t1;
+
+    /// Keeps the segment where lo <= o + t d <= hi (inv = 1 / d); empty (t0 > t1) if none.
+    URBIS_HD void clip(float o, float d, float inv, float lo, float hi) {
+        if (d == 0.0f) {
+            if (o < lo || o > hi) t0 = 3.0e38f;
+            return;
+        }
+        const float ta = (lo - o) * inv, tb = (hi - o) * inv;
+        const float near = ta < tb ? ta : tb, far = ta < tb ? tb : ta;
+        t0 = near > t0 ? near : t0;
+        t1 = far < t1 ? far : t1;
+    }
+    URBIS_HD bool empty() const { return t0 > t1; }
+};
+
+/// Whether the ray's segment meets the box in wall coordinates that holds all of the tile
+/// (wallTileBounds is the same box in world space), widened by twice the parts' padding so that
+/// rounding never turns away a ray that a padded part at the tile's edge would stop.
+URBIS_HD inline bool reachesWallTile(const WallRecord& wall, const WallRay& r, float tmax) {
+    constexpr float e = 2.0f * kWallPartPadding;
+    SegmentClip s{r.tmin, tmax};
+    s.clip(r.o.z, r.d.z, r.invD.z, -wall.reachBack() - e, wall.depthFront + e);
+    s.clip(r.o.x, r.d.x, r.invD.x, wall.tileReachU0() - e, wall.tileReachU1() + e);
+    s.clip(r.o.y, r.d.y, r.invD.y, wall.tileV0() - e, wall.tileV1() + e);
+    return !s.empty();
+}
+
 /// The world-space normal of a wall-space axis.
 URBIS_HD inline Vec3f wallAxisNormal(const WallRecord& wall, uint32_t axis) {
     return axis == 0 ? wall.axisU : (axis == 1 ? Vec3f{0, 1, 0} : wall.normal);
@@ -181,6 +211,9 @@ URBIS_HD inline bool intersectPunchedFront(const WallRecord& wall, const CellLay
 /// traverseBvh); the template below fixes it at compile time.
 URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit, bool anyHit) {
     const WallRay r(wall, ray);
+    // Most rays that reach a wall in the BVH miss it: a leaf holds several walls, and the box of a
+    // wall that is not aligned with the axes is loose. One slab test turns them away.
+    if (!reachesWallTile(wall, r, ray.tmax)) return false;
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, r, tmax, hit);
     if (found && anyHit) return true;
@@ -194,26 +227,16 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     const float lo[2] = {wall.gridU + wall.slotWidth * float(slot0) - e, wall.gridV + wall.floorHeight * float(floor0) - e};
     const float hi[2] = {wall.gridU + wall.slotWidth * float(slotEnd) + e,
                          wall.gridV + wall.floorHeight * float(floorEnd) + e};
-    float t0 = r.tmin, t1 = tmax;
-    auto clip = [&](float o, float d, float inv, float l, float h) {
-        if (d == 0.0f) {
-            if (o < l || o > h) t0 = 3.0e38f;
-            return;
-        }
-        const float ta = (l - o) * inv, tb = (h - o) * inv;
-        const float near = ta < tb ? ta : tb, far = ta < tb ? tb : ta;
-        t0 = near > t0 ? near : t0;
-        t1 = far < t1 ? far : t1;
-    };
-    clip(r.o.x, r.d.x, r.invD.x, lo[0], hi[0]);
-    clip(r.o.y, r.d.y, r.invD.y, lo[1], hi[1]);
-    if (t0 > t1) return found;
-    const CellSide side = r.o.z + t0 * r.d.z > -wall.reveal ? CellSide::Front : CellSide::Back;
-    if (side == CellSide::Front) clip(r.o.z, r.d.z, r.invD.z, -wall.reveal - e, wall.depthFront + e);
-    else clip(r.o.z, r.d.z, r.invD.z, -wall.depthBack - e, -wall.reveal + e);
-    if (t0 > t1) return found;
+    SegmentClip s{r.tmin, tmax};
+    s.clip(r.o.x, r.d.x, r.invD.x, lo[0], hi[0]);
+    s.clip(r.o.y, r.d.y, r.invD.y, lo[1], hi[1]);
+    if (s.empty()) return found;
+    const CellSide side = r.o.z + s.t0 * r.d.z > -wall.reveal ? CellSide::Front : CellSide::Back;
+    if (side == CellSide::Front) s.clip(r.o.z, r.d.z, r.invD.z, -wall.reveal - e, wall.depthFront + e);
+    else s.clip(r.o.z, r.d.z, r.invD.z, -wall.depthBack - e, -wall.reveal + e);
+    if (s.empty()) return found;
     // The cell of the entry point, and the distances to the next column and row boundaries.
-    const float pu = r.o.x + t0 * r.d.x, pv = r.o.y + t0 * r.d.y;
+    const float pu = r.o.x + s.t0 * r.d.x, pv = r.o.y + s.t0 * r.d.y;
     int i = int(floorf((pu - wall.gridU) / wall.slotWidth)), j = int(floorf((pv - wall.gridV) / wall.floorHeight));
     i = i < slot0 ? slot0 : (i >= slotEnd ? slotEnd - 1 : i);
     j = j < floor0 ? floor0 : (j >= floorEnd ? floorEnd - 1 : j);
@@ -236,12 +259,12 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
         cellParts(wall, c, side, parts);
         if (parts.found) return true;
         if (tu < tv) {
-            if (tu > t1 || tu > tmax) break;
+            if (tu > s.t1 || tu > tmax) break;
             i += stepI;
             if (i < slot0 || i >= slotEnd) break;
             tu = nextU(i);
         } else {
-            if (tv > t1 || tv > tmax) break;
+            if (tv > s.t1 || tv > tmax) break;
             j += stepJ;
             if (j < floor0 || j >= floorEnd) break;
             tv = nextV(j);

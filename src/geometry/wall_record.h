@@ -75,6 +75,14 @@ struct WallRecord {
     URBIS_HD float tileV1() const {
         return tileFloorEnd() >= int(floors) ? height : gridV + floorHeight * float(tileFloorEnd());
     }
+    /// The tile's reach in u: its cells, and where it touches the wall's ends the margins and the
+    /// parapet's mitres, which may reach beyond those ends (reflex corners).
+    URBIS_HD float tileReachU0() const { return slot0 > 0 ? tileU0() : fminf(0.0f, parapetInner0); }
+    URBIS_HD float tileReachU1() const {
+        return tileSlotEnd() < int(slots) ? tileU1() : fmaxf(width, parapetInner1);
+    }
+    /// How far the tile's parts reach behind the wall plane: the rooms, the parapet's inner face.
+    URBIS_HD float reachBack() const { return fmaxf(depthBack, parapetThickness); }
     /// World position of wall coordinates (u, v, w).
     URBIS_HD Vec3f worldFromWall(float u, float v, float w) const {
         return origin + axisU * u + Vec3f{0, v, 0} + normal * w;

@@ -11,6 +11,11 @@ namespace {
 /// Metres by which a tile's box reaches past an edge it shares with another tile of its wall, so
 /// that rounding in the box test can never lose a ray exactly on the shared edge.
 constexpr float kTileOverlap = 0.01f;
+/// What testing a wall costs against a triangle, for the BVH's surface area heuristic. At the
+/// default cost of 1 leaves held several walls (all of a small building's) and every ray into the
+/// leaf tested each of them; 4, 8 and 16 were measured on the H100 (docs/gpu_notes.md): equal on
+/// the generated city, 16 best on San Francisco.
+constexpr uint32_t kWallCostInTriangles = 16;
 
 /// The start of run k of n equal runs over `count` cells.
 int runStart(int count, int runs, int k) { return int(int64_t(count) * k / runs); }
@@ -41,15 +46,13 @@ std::vector<WallRecord> splitWallsIntoTiles(const std::vector<WallRecord>& walls
 }
 
 Bounds3f wallTileBounds(const WallRecord& wall) {
-    // At the wall's ends the parapet's mitres may reach beyond it (reflex corners).
-    const float u0 = wall.slot0 > 0 ? wall.tileU0() - kTileOverlap : fminf(0.0f, wall.parapetInner0);
-    const float u1 = wall.tileSlotEnd() < int(wall.slots) ? wall.tileU1() + kTileOverlap
-                                                          : fmaxf(wall.width, wall.parapetInner1);
+    const float u0 = wall.tileReachU0() - (wall.slot0 > 0 ? kTileOverlap : 0.0f);
+    const float u1 = wall.tileReachU1() + (wall.tileSlotEnd() < int(wall.slots) ? kTileOverlap : 0.0f);
     const float v0 = wall.tileV0() - (wall.floor0 > 0 ? kTileOverlap : 0.0f);
     const float v1 = wall.tileV1() + (wall.tileFloorEnd() < int(wall.floors) ? kTileOverlap : 0.0f);
     Bounds3f b;
     for (int k = 0; k < 8; ++k)
-        b.extend(wall.worldFromWall(k & 1 ? u1 : u0, k & 2 ? v1 : v0, k & 4 ? wall.depthFront : -wall.depthBack));
+        b.extend(wall.worldFromWall(k & 1 ? u1 : u0, k & 2 ? v1 : v0, k & 4 ? wall.depthFront : -wall.reachBack()));
     return b;
 }
 
@@ -66,7 +69,12 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
         bounds[i].extend(t.p2);
     }
     for (size_t i = 0; i < walls.size(); ++i) bounds[mesh.size() + i] = wallTileBounds(walls[i]);
-    Bvh bvh = buildBvh(bounds);
+    std::vector<uint32_t> costs;
+    if (!walls.empty()) {
+        costs.assign(bounds.size(), 1u);
+        std::fill(costs.begin() + std::ptrdiff_t(mesh.size()), costs.end(), kWallCostInTriangles);
+    }
+    Bvh bvh = buildBvh(bounds, BvhBuildOptions{}, costs);
     Scene scene;
     scene.nodes = std::move(bvh.nodes);
     scene.triangles.reserve(mesh.size());
