@@ -34,18 +34,25 @@ WallRecord testWall(WallStyle style) {
     return w;
 }
 
+/// Tests every part of `parts`; returns whether any was hit (closest in `hit`, tmax shrunk).
+bool intersectWallParts(const CellParts& parts, const WallRay& r, float& tmax, WallHit& hit) {
+    bool found = false;
+    for (int i = 0; i < parts.count; ++i) found |= intersectWallPart(parts.parts[i], r, tmax, hit);
+    return found;
+}
+
 /// Closest hit over the margins and every cell (both sides of the glass).
 bool bruteForce(const WallRecord& wall, const Ray& ray, WallHit& hit) {
     const WallRay r(wall, ray);
     float tmax = ray.tmax;
     CellParts margins;
     marginParts(wall, margins);
-    bool found = intersectWallParts<false>(margins, r, tmax, hit);
+    bool found = intersectWallParts(margins, r, tmax, hit);
     for (uint32_t j = 0; j < wall.floors; ++j)
         for (uint32_t i = 0; i < wall.slots; ++i) {
             CellParts cell;
             cellParts(wall, j, i, CellSide::Both, cell);
-            found |= intersectWallParts<false>(cell, r, tmax, hit);
+            found |= intersectWallParts(cell, r, tmax, hit);
         }
     return found;
 }

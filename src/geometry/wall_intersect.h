@@ -72,9 +72,8 @@ URBIS_HD inline Vec3f wallAxisNormal(const WallRecord& wall, uint32_t axis) {
 }
 
 /// Tests one part with tmin < t < tmax; on a hit shrinks tmax and fills `hit`. A box is solid:
-/// a ray from inside hits its exit face. Out of line on the GPU: cellParts calls it from some 30
-/// places, and as many inlined copies overflowed the instruction cache.
-URBIS_HD URBIS_DEVICE_NOINLINE inline bool intersectWallPart(const WallPart& p, const WallRay& r, float& tmax, WallHit& hit) {
+/// a ray from inside hits its exit face.
+URBIS_HD inline bool intersectWallPart(const WallPart& p, const WallRay& r, float& tmax, WallHit& hit) {
     constexpr float e = kWallPartPadding;
     if (p.axis != kWallPartBox) {
         const int a = p.axis, b = a == 0 ? 1 : 0, c = a == 2 ? 1 : 2;
@@ -102,37 +101,6 @@ URBIS_HD URBIS_DEVICE_NOINLINE inline bool intersectWallPart(const WallPart& p, 
     hit = {t, t == tNear ? nearAxis : farAxis, p.material, p.part};
     return true;
 }
-
-/// Tests every part of `parts`; returns whether any was hit (closest in `hit`, tmax shrunk).
-template <bool AnyHit>
-URBIS_HD inline bool intersectWallParts(const CellParts& parts, const WallRay& r, float& tmax, WallHit& hit) {
-    bool found = false;
-    for (int i = 0; i < parts.count; ++i) {
-        if (intersectWallPart(parts.parts[i], r, tmax, hit)) {
-            found = true;
-            if constexpr (AnyHit) return true;
-        }
-    }
-    return found;
-}
-
-/// An `Out` for cellParts that tests each part as it is made, in the same order as
-/// intersectWallParts over the list would (so the same hit), without storing the list.
-struct WallPartTester {
-    const WallRay& r;
-    float& tmax;
-    WallHit& hit;
-    bool anyHit;
-    bool found = false;
-
-    URBIS_HD void addQuad(uint8_t axis, Vec3f lo, Vec3f hi, SurfacePart part, uint32_t material) {
-        if (anyHit && found) return;
-        found |= intersectWallPart(WallPart{lo, hi, axis, part, material}, r, tmax, hit);
-    }
-    URBIS_HD void addBox(Vec3f lo, Vec3f hi, SurfacePart part, uint32_t material) {
-        addQuad(kWallPartBox, lo, hi, part, material);
-    }
-};
 
 /// The margins around the grid: the plane w = 0 where it lies in the wall (in the record's tile:
 /// see WallRecord::slot0) but not inside the grid.
@@ -255,9 +223,11 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
         if (wall.style == WallStyle::Punched && side == CellSide::Front && !c.balcony &&
             intersectPunchedFront(wall, c, r, tmax, hit))
             return true;
-        WallPartTester parts{r, tmax, hit, anyHit};
-        cellParts(wall, c, side, parts);
-        if (parts.found) return true;
+        const int parts = cellPartCount(wall, c, side);
+        bool cellHit = false;
+        for (int k = 0; k < parts && !(cellHit && anyHit); ++k)
+            cellHit |= intersectWallPart(cellPart(wall, c, side, k), r, tmax, hit);
+        if (cellHit) return true;
         if (tu < tv) {
             if (tu > s.t1 || tu > tmax) break;
             i += stepI;

@@ -34,120 +34,29 @@ inline constexpr float kShopWindowChance = 0.8f;
 /// mullions), a ray behind it only those behind (room with its front wall, glass, mullions).
 enum class CellSide : uint8_t { Both, Front, Back };
 
-/// Fixed-size list of parts. The functions below write parts to any `Out` with this addQuad and
-/// addBox: a CellParts (the twin, tests), or the intersector's part tester, which tests each part
-/// as it is made instead of keeping ~770 bytes of parts on the stack (GPU local memory).
+/// Fixed-size list of parts: what marginParts and cellParts write to (the twin, tests).
 struct CellParts {
     WallPart parts[kMaxCellParts];
     int count = 0;
 
-    URBIS_HD void addQuad(uint8_t axis, Vec3f lo, Vec3f hi, SurfacePart part, uint32_t material) {
-        parts[count++] = WallPart{lo, hi, axis, part, material};
-    }
-    URBIS_HD void addBox(Vec3f lo, Vec3f hi, SurfacePart part, uint32_t material) {
-        parts[count++] = WallPart{lo, hi, kWallPartBox, part, material};
-    }
+    URBIS_HD void add(const WallPart& part) { parts[count++] = part; }
 };
 
 /// The plain margins of a wall around its cell grid, as quads in the plane w = 0 (left, right,
 /// bottom, top; empty ones left out).
-template <class Out>
-URBIS_HD inline void marginParts(const WallRecord& wall, Out& out) {
+URBIS_HD inline void marginParts(const WallRecord& wall, CellParts& out) {
     const float u0 = wall.gridU, u1 = wall.gridU + wall.gridWidth();
     const float v0 = wall.gridV, v1 = wall.gridV + wall.gridHeight();
     const uint32_t m = wall.wallMaterial;
-    if (u0 > 0.0f) out.addQuad(2, {0, 0, 0}, {u0, wall.height, 0}, SurfacePart::Facade, m);
-    if (u1 < wall.width) out.addQuad(2, {u1, 0, 0}, {wall.width, wall.height, 0}, SurfacePart::Facade, m);
-    if (v0 > 0.0f) out.addQuad(2, {u0, 0, 0}, {u1, v0, 0}, SurfacePart::Facade, m);
-    if (v1 < wall.height) out.addQuad(2, {u0, v1, 0}, {u1, wall.height, 0}, SurfacePart::Facade, m);
+    if (u0 > 0.0f) out.add({{0, 0, 0}, {u0, wall.height, 0}, 2, SurfacePart::Facade, m});
+    if (u1 < wall.width) out.add({{u1, 0, 0}, {wall.width, wall.height, 0}, 2, SurfacePart::Facade, m});
+    if (v0 > 0.0f) out.add({{u0, 0, 0}, {u1, v0, 0}, 2, SurfacePart::Facade, m});
+    if (v1 < wall.height) out.add({{u0, v1, 0}, {u1, wall.height, 0}, 2, SurfacePart::Facade, m});
 }
 
 /// The hash that every choice of one cell draws from.
 URBIS_HD inline HashStream cellRandom(const WallRecord& wall, uint32_t floor, uint32_t slot) {
     return HashStream{hash3(hash2(wall.seed, wall.wallIndex), floor, slot)};
-}
-
-/// The room behind an opening: five quads (back, two sides, floor, ceiling) inset from the cell
-/// [u0, u1] x [v0, v1] by a thin inner wall, from w = -depthBack to w = front.
-template <class Out>
-URBIS_HD inline void addRoom(const WallRecord& wall, float u0, float u1, float v0, float v1, float front,
-                             uint32_t material, CellSide side, Out& out) {
-    if (side == CellSide::Front) return;
-    constexpr float kInset = 0.05f;
-    const float a = u0 + kInset, b = u1 - kInset, c = v0 + kInset, d = v1 - kInset, back = -wall.depthBack;
-    out.addQuad(2, {a, c, back}, {b, d, back}, SurfacePart::Room, material);
-    out.addQuad(0, {a, c, back}, {a, d, front}, SurfacePart::Room, material);
-    out.addQuad(0, {b, c, back}, {b, d, front}, SurfacePart::Room, material);
-    out.addQuad(1, {a, c, back}, {b, c, front}, SurfacePart::Room, material);
-    out.addQuad(1, {a, d, back}, {b, d, front}, SurfacePart::Room, material);
-}
-
-/// The plane w = `w` of the cell [u0, u1] x [v0, v1] around the opening [ou0, ou1] x [ov0, ov1]: four quads.
-template <class Out>
-URBIS_HD inline void addFrame(float u0, float u1, float v0, float v1, float ou0, float ou1, float ov0, float ov1, float w,
-                              SurfacePart part, uint32_t material, Out& out) {
-    out.addQuad(2, {u0, v0, w}, {ou0, v1, w}, part, material);
-    out.addQuad(2, {ou1, v0, w}, {u1, v1, w}, part, material);
-    out.addQuad(2, {ou0, v0, w}, {ou1, ov0, w}, part, material);
-    out.addQuad(2, {ou0, ov1, w}, {ou1, v1, w}, part, material);
-}
-
-/// A recessed opening [ou0, ou1] x [ov0, ov1] in the cell [u0, u1] x [v0, v1]: the wall plane around
-/// it and its jambs (front), the glass `reveal` metres deep (both sides) and the room behind, whose
-/// front wall lies in the glass plane (back).
-template <class Out>
-URBIS_HD inline void addOpening(const WallRecord& wall, float u0, float u1, float v0, float v1, float ou0, float ou1,
-                                float ov0, float ov1, uint32_t roomMaterial, CellSide side, Out& out) {
-    const uint32_t m = wall.wallMaterial;
-    const float r = -wall.reveal;
-    if (side != CellSide::Back) {
-        addFrame(u0, u1, v0, v1, ou0, ou1, ov0, ov1, 0.0f, SurfacePart::Facade, m, out);
-        out.addQuad(0, {ou0, ov0, r}, {ou0, ov1, 0}, SurfacePart::Jamb, m);
-        out.addQuad(0, {ou1, ov0, r}, {ou1, ov1, 0}, SurfacePart::Jamb, m);
-        out.addQuad(1, {ou0, ov0, r}, {ou1, ov0, 0}, SurfacePart::Jamb, m);
-        out.addQuad(1, {ou0, ov1, r}, {ou1, ov1, 0}, SurfacePart::Jamb, m);
-    }
-    out.addQuad(2, {ou0, ov0, r}, {ou1, ov1, r}, SurfacePart::Glass,
-                wall.facadeMaterials + uint32_t(FacadeMaterial::Glass));
-    if (side != CellSide::Front) addFrame(u0, u1, v0, v1, ou0, ou1, ov0, ov1, r, SurfacePart::Room, roomMaterial, out);
-    addRoom(wall, u0, u1, v0, v1, r, roomMaterial, side, out);
-}
-
-/// A balcony in front of the cell's opening [ou0, ou1]: a slab on the cell's floor and a railing
-/// (front and two sides) around it, depthFront metres deep.
-template <class Out>
-URBIS_HD inline void addBalcony(const WallRecord& wall, float u0, float u1, float v0, float ou0, float ou1,
-                                CellSide side, Out& out) {
-    if (side == CellSide::Back) return;
-    constexpr float kSlab = 0.15f, kRail = 0.05f, kRailHeight = 1.0f;
-    const float a = fmaxf(u0 + 0.1f, ou0 - 0.6f), b = fminf(u1 - 0.1f, ou1 + 0.6f), f = wall.depthFront;
-    const uint32_t slab = wall.facadeMaterials + uint32_t(FacadeMaterial::Slab);
-    const uint32_t rail = wall.facadeMaterials + uint32_t(FacadeMaterial::Railing);
-    const float top = v0 + kSlab, railTop = top + kRailHeight;
-    out.addBox({a, v0, 0}, {b, top, f}, SurfacePart::BalconySlab, slab);
-    out.addBox({a, top, f - kRail}, {b, railTop, f}, SurfacePart::Railing, rail);
-    out.addBox({a, top, 0}, {a + kRail, railTop, f - kRail}, SurfacePart::Railing, rail);
-    out.addBox({b - kRail, top, 0}, {b, railTop, f - kRail}, SurfacePart::Railing, rail);
-}
-
-/// A curtain-wall panel filling the cell: half mullions on its four edges, a spandrel below
-/// wall.sillHeight and glass above it, both `reveal` deep, and the room behind.
-template <class Out>
-URBIS_HD inline void addCurtainPanel(const WallRecord& wall, float u0, float u1, float v0, float v1,
-                                     uint32_t roomMaterial, CellSide side, Out& out) {
-    constexpr float kHalfMullion = 0.06f, kMullionDepth = 0.12f;
-    const float r = -wall.reveal, m = kHalfMullion;
-    const uint32_t mullion = wall.facadeMaterials + uint32_t(FacadeMaterial::Mullion);
-    out.addBox({u0, v0, r}, {u0 + m, v1, kMullionDepth}, SurfacePart::Mullion, mullion);
-    out.addBox({u1 - m, v0, r}, {u1, v1, kMullionDepth}, SurfacePart::Mullion, mullion);
-    out.addBox({u0 + m, v0, r}, {u1 - m, v0 + m, kMullionDepth}, SurfacePart::Mullion, mullion);
-    out.addBox({u0 + m, v1 - m, r}, {u1 - m, v1, kMullionDepth}, SurfacePart::Mullion, mullion);
-    const float split = v0 + wall.sillHeight;
-    out.addQuad(2, {u0 + m, v0 + m, r}, {u1 - m, split, r}, SurfacePart::Spandrel,
-                wall.facadeMaterials + uint32_t(FacadeMaterial::Spandrel));
-    out.addQuad(2, {u0 + m, split, r}, {u1 - m, v1 - m, r}, SurfacePart::Glass,
-                wall.facadeMaterials + uint32_t(FacadeMaterial::Glass));
-    addRoom(wall, u0, u1, v0, v1, r, roomMaterial, side, out);
 }
 
 /// What a punched cell holds, drawn from its hash: the cell's extent, its opening (window, balcony
@@ -186,23 +95,120 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
     return c;
 }
 
-/// The parts of cell (floor, slot) of `wall` on `side` of its glass plane, in wall coordinates; all
-/// lie within the cell's column [u0, u1] x [v0, v1] (any w), which lets the grid traversal stop at
-/// the first cell hit.
-template <class Out>
-URBIS_HD inline void cellParts(const WallRecord& wall, const CellLayout& c, CellSide side, Out& out) {
-    if (wall.style == WallStyle::Curtain) {
-        addCurtainPanel(wall, c.u0, c.u1, c.v0, c.v1, c.roomMaterial, side, out);
-        return;
+// A cell's parts one at a time, by index, so that the intersector tests them in one loop: lanes of
+// a GPU warp at different parts of different cells still run the one part test together (a list
+// written part by part from some 30 places ran it at each place with a few lanes; docs/gpu_notes.md).
+// Punched cells number their parts: 0-3 the frame around the opening in the wall plane, 4-7 its
+// jambs, 8 the glass, 9-12 the room's front wall (the frame in the glass plane), 13-17 the room,
+// 18-21 the balcony (slab, front and side railings). Curtain-wall cells: 0-3 the half mullions on
+// the cell's edges, 4 the spandrel, 5 the glass, 6-10 the room.
+
+/// The room behind an opening: part q (0 back, 1 and 2 sides, 3 floor, 4 ceiling) of five quads
+/// inset from the cell by a thin inner wall, from w = -depthBack to w = front.
+URBIS_HD inline WallPart roomPart(const WallRecord& wall, const CellLayout& c, float front, int q) {
+    constexpr float kInset = 0.05f;
+    const float a = c.u0 + kInset, b = c.u1 - kInset, lo = c.v0 + kInset, hi = c.v1 - kInset, back = -wall.depthBack;
+    const uint32_t m = c.roomMaterial;
+    switch (q) {
+    case 0: return {{a, lo, back}, {b, hi, back}, 2, SurfacePart::Room, m};
+    case 1: return {{a, lo, back}, {a, hi, front}, 0, SurfacePart::Room, m};
+    case 2: return {{b, lo, back}, {b, hi, front}, 0, SurfacePart::Room, m};
+    case 3: return {{a, lo, back}, {b, lo, front}, 1, SurfacePart::Room, m};
+    default: return {{a, hi, back}, {b, hi, front}, 1, SurfacePart::Room, m};
     }
-    addOpening(wall, c.u0, c.u1, c.v0, c.v1, c.ou0, c.ou1, c.ov0, c.ov1, c.roomMaterial, side, out);
-    if (c.balcony) addBalcony(wall, c.u0, c.u1, c.v0, c.ou0, c.ou1, side, out);
 }
 
-/// The same, drawing the cell's layout from its hash.
-template <class Out>
-URBIS_HD inline void cellParts(const WallRecord& wall, uint32_t floor, uint32_t slot, CellSide side, Out& out) {
-    cellParts(wall, cellLayout(wall, floor, slot), side, out);
+/// Part q of the four quads of the plane w around the cell's opening.
+URBIS_HD inline WallPart framePart(const CellLayout& c, float w, SurfacePart part, uint32_t material, int q) {
+    switch (q) {
+    case 0: return {{c.u0, c.v0, w}, {c.ou0, c.v1, w}, 2, part, material};
+    case 1: return {{c.ou1, c.v0, w}, {c.u1, c.v1, w}, 2, part, material};
+    case 2: return {{c.ou0, c.v0, w}, {c.ou1, c.ov0, w}, 2, part, material};
+    default: return {{c.ou0, c.ov1, w}, {c.ou1, c.v1, w}, 2, part, material};
+    }
+}
+
+/// Part q of the opening's four jambs, from the wall plane back to the glass.
+URBIS_HD inline WallPart jambPart(const WallRecord& wall, const CellLayout& c, int q) {
+    const float r = -wall.reveal;
+    const uint32_t m = wall.wallMaterial;
+    switch (q) {
+    case 0: return {{c.ou0, c.ov0, r}, {c.ou0, c.ov1, 0}, 0, SurfacePart::Jamb, m};
+    case 1: return {{c.ou1, c.ov0, r}, {c.ou1, c.ov1, 0}, 0, SurfacePart::Jamb, m};
+    case 2: return {{c.ou0, c.ov0, r}, {c.ou1, c.ov0, 0}, 1, SurfacePart::Jamb, m};
+    default: return {{c.ou0, c.ov1, r}, {c.ou1, c.ov1, 0}, 1, SurfacePart::Jamb, m};
+    }
+}
+
+/// Part q of a balcony in front of the opening: a slab on the cell's floor and a railing (front and
+/// two sides) around it, depthFront metres deep.
+URBIS_HD inline WallPart balconyPart(const WallRecord& wall, const CellLayout& c, int q) {
+    constexpr float kSlab = 0.15f, kRail = 0.05f, kRailHeight = 1.0f;
+    const float a = fmaxf(c.u0 + 0.1f, c.ou0 - 0.6f), b = fminf(c.u1 - 0.1f, c.ou1 + 0.6f), f = wall.depthFront;
+    const uint32_t rail = wall.facadeMaterials + uint32_t(FacadeMaterial::Railing);
+    const float top = c.v0 + kSlab, railTop = top + kRailHeight;
+    switch (q) {
+    case 0: return {{a, c.v0, 0}, {b, top, f}, kWallPartBox, SurfacePart::BalconySlab,
+                    wall.facadeMaterials + uint32_t(FacadeMaterial::Slab)};
+    case 1: return {{a, top, f - kRail}, {b, railTop, f}, kWallPartBox, SurfacePart::Railing, rail};
+    case 2: return {{a, top, 0}, {a + kRail, railTop, f - kRail}, kWallPartBox, SurfacePart::Railing, rail};
+    default: return {{b - kRail, top, 0}, {b, railTop, f - kRail}, kWallPartBox, SurfacePart::Railing, rail};
+    }
+}
+
+/// Part q (numbered as above) of a curtain-wall panel filling the cell: half mullions on its four
+/// edges, a spandrel below wall.sillHeight and glass above it, both `reveal` deep, and the room.
+URBIS_HD inline WallPart curtainPart(const WallRecord& wall, const CellLayout& c, int q) {
+    constexpr float kHalfMullion = 0.06f, kMullionDepth = 0.12f;
+    const float r = -wall.reveal, m = kHalfMullion, split = c.v0 + wall.sillHeight;
+    const uint32_t mullion = wall.facadeMaterials + uint32_t(FacadeMaterial::Mullion);
+    switch (q) {
+    case 0: return {{c.u0, c.v0, r}, {c.u0 + m, c.v1, kMullionDepth}, kWallPartBox, SurfacePart::Mullion, mullion};
+    case 1: return {{c.u1 - m, c.v0, r}, {c.u1, c.v1, kMullionDepth}, kWallPartBox, SurfacePart::Mullion, mullion};
+    case 2: return {{c.u0 + m, c.v0, r}, {c.u1 - m, c.v0 + m, kMullionDepth}, kWallPartBox, SurfacePart::Mullion, mullion};
+    case 3: return {{c.u0 + m, c.v1 - m, r}, {c.u1 - m, c.v1, kMullionDepth}, kWallPartBox, SurfacePart::Mullion, mullion};
+    case 4: return {{c.u0 + m, c.v0 + m, r}, {c.u1 - m, split, r}, 2, SurfacePart::Spandrel,
+                    wall.facadeMaterials + uint32_t(FacadeMaterial::Spandrel)};
+    case 5: return {{c.u0 + m, split, r}, {c.u1 - m, c.v1 - m, r}, 2, SurfacePart::Glass,
+                    wall.facadeMaterials + uint32_t(FacadeMaterial::Glass)};
+    default: return roomPart(wall, c, r, q - 6);
+    }
+}
+
+/// Part q (numbered as above) of a punched cell.
+URBIS_HD inline WallPart punchedPart(const WallRecord& wall, const CellLayout& c, int q) {
+    const float r = -wall.reveal;
+    if (q < 4) return framePart(c, 0.0f, SurfacePart::Facade, wall.wallMaterial, q);
+    if (q < 8) return jambPart(wall, c, q - 4);
+    if (q == 8)
+        return {{c.ou0, c.ov0, r}, {c.ou1, c.ov1, r}, 2, SurfacePart::Glass,
+                wall.facadeMaterials + uint32_t(FacadeMaterial::Glass)};
+    if (q < 13) return framePart(c, r, SurfacePart::Room, c.roomMaterial, q - 9);
+    if (q < 18) return roomPart(wall, c, r, q - 13);
+    return balconyPart(wall, c, q - 18);
+}
+
+/// How many parts of the cell lie on `side` of its glass plane (all lie within the cell's column
+/// [u0, u1] x [v0, v1], any w, which lets the grid traversal stop at the first cell hit): the glass
+/// itself on both sides, in front of it the frame, jambs, balcony and mullions, behind it the room.
+URBIS_HD inline int cellPartCount(const WallRecord& wall, const CellLayout& c, CellSide side) {
+    if (wall.style == WallStyle::Curtain) return side == CellSide::Front ? 6 : 11;
+    const int balcony = c.balcony && side != CellSide::Back ? 4 : 0;
+    return (side == CellSide::Front ? 9 : (side == CellSide::Back ? 10 : 18)) + balcony;
+}
+
+/// Part k < cellPartCount of the cell on `side`: the numbering above without the other side's parts.
+URBIS_HD inline WallPart cellPart(const WallRecord& wall, const CellLayout& c, CellSide side, int k) {
+    if (wall.style == WallStyle::Curtain) return curtainPart(wall, c, k);
+    if (side == CellSide::Back) return punchedPart(wall, c, k + 8);
+    return punchedPart(wall, c, side == CellSide::Front && k >= 9 ? k + 9 : k);
+}
+
+/// Every part of cell (floor, slot) of `wall` on `side`, drawing its layout from its hash.
+URBIS_HD inline void cellParts(const WallRecord& wall, uint32_t floor, uint32_t slot, CellSide side, CellParts& out) {
+    const CellLayout c = cellLayout(wall, floor, slot);
+    const int n = cellPartCount(wall, c, side);
+    for (int k = 0; k < n; ++k) out.add(cellPart(wall, c, side, k));
 }
 
 } // namespace urbis

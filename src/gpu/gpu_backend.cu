@@ -17,9 +17,13 @@ namespace {
 constexpr int kTileX = 8, kTileY = 16;   // 128 threads; each warp covers 8 x 4 pixels
 constexpr int kTraceBlock = 128;
 
+// Five blocks per SM hold the kernel to 96 registers. Left free, ptxas took 158 for the inlined wall
+// part tests: three blocks per SM, and frames of stored triangles 25 % slower (docs/gpu_notes.md).
+constexpr int kRenderBlocksPerSm = 5;
+
 /// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU.
-__global__ void __launch_bounds__(kTileX * kTileY) renderKernel(SceneView scene, Camera camera, RenderSettings settings,
-                                                                Vec3f* film, unsigned long long* rayCount) {
+__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm)
+    renderKernel(SceneView scene, Camera camera, RenderSettings settings, Vec3f* film, unsigned long long* rayCount) {
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     uint32_t rays = 0;
