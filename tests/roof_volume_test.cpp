@@ -33,6 +33,15 @@ TEST(RoofVolume, GabledPrismIsHalfTheBox) {
     EXPECT_NEAR(roofVolume(roofed(rectangle(20, 10), RoofShape::Gabled, kMin, kHeight, kRoof)), 20 * 10 * kRoof / 2, 1e-3);
 }
 
+TEST(RoofVolume, GabledLShapeHasARidgeAndAGablePerWing) {
+    // lShape: two wings w = 8 m wide and 20 m long. Each wing is a gabled prism (cross-section w H / 2)
+    // up to its gable; where the wings meet, the hip outside and the valley inside enclose as much as
+    // a w x w piece of prism, so V = (w H / 2)(20 + 20 - w). Hipped wing ends would leave out two
+    // pyramids; one ridge across the whole footprint would give another volume.
+    const double w = 8;
+    EXPECT_NEAR(roofVolume(roofed(lShape(), RoofShape::Gabled, kMin, kHeight, kRoof)), w * kRoof / 2 * (20 + 20 - w), 1e-3);
+}
+
 TEST(RoofVolume, SkillionWedgeIsHalfTheBox) {
     EXPECT_NEAR(roofVolume(roofed(rectangle(20, 10), RoofShape::Skillion, kMin, kHeight, kRoof)), 20 * 10 * kRoof / 2, 1e-3);
 }

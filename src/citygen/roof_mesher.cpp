@@ -126,10 +126,14 @@ RoofResult meshRoof(const Building& building, const FootprintTriangles& footprin
         shape = RoofShape::Hipped;
     }
     const bool parapet = shape == RoofShape::Flat && building.height - building.minHeight >= kParapetMinWall;
+    // A gabled roof over wings (not convex) gets a ridge and gables per wing, unless a tag sets one
+    // ridge direction for the whole roof.
+    const bool gablesPerWing = shape == RoofShape::Gabled && !convex && building.roofDirection < 0 && !building.roofAcross;
     std::optional<StraightSkeleton> skeleton;
-    if (parapet || shape == RoofShape::Hipped || shape == RoofShape::Mansard || (shape == RoofShape::Pyramidal && !convex)) {
+    if (parapet || gablesPerWing || shape == RoofShape::Hipped || shape == RoofShape::Mansard ||
+        (shape == RoofShape::Pyramidal && !convex)) {
         skeleton = interiorStraightSkeleton(polygon);
-        if (!skeleton && shape != RoofShape::Flat) {
+        if (!skeleton && shape != RoofShape::Flat && !gablesPerWing) {
             result.fallbacks.push_back("skeleton_failed");
             shape = RoofShape::Flat;
         }
@@ -144,7 +148,7 @@ RoofResult meshRoof(const Building& building, const FootprintTriangles& footprin
     double lo = INFINITY, hi = -INFINITY;
     for (const Vec2d& p : polygon.outer) lo = std::min(lo, p.x * across.x + p.y * across.y), hi = std::max(hi, p.x * across.x + p.y * across.y);
     const double depth = skeleton ? skeleton->maxTime : 0.5 * box.shortSide;
-    const double height = roofHeightOf(building, shape, depth, 0.5 * (hi - lo));
+    const double height = roofHeightOf(building, shape, depth, skeleton && gablesPerWing ? depth : 0.5 * (hi - lo));
 
     RoofSink sink{mesh, roofInfo, wallInfo, building.height - height};
     bool done = true;
@@ -161,7 +165,11 @@ RoofResult meshRoof(const Building& building, const FootprintTriangles& footprin
             meshFlatRoof(footprint, sink);
         break;
     }
-    case RoofShape::Skillion: case RoofShape::Gabled: case RoofShape::Gambrel: case RoofShape::Round:
+    case RoofShape::Gabled:
+        if (skeleton && gablesPerWing && meshGabledSkeletonRoof(*skeleton, {{0, depth}, {0, height}}, sink)) break;
+        meshRidgeRoof(polygon, footprint, across, ridgeProfile(shape, lo, hi, height), sink);
+        break;
+    case RoofShape::Skillion: case RoofShape::Gambrel: case RoofShape::Round:
         meshRidgeRoof(polygon, footprint, across, ridgeProfile(shape, lo, hi, height), sink);
         break;
     case RoofShape::Mansard:  // steep lower quarter rising 65%, then shallow

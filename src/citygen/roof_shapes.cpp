@@ -191,6 +191,52 @@ bool meshSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile& profi
     });
 }
 
+bool meshGabledSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile& profile, RoofSink& sink) {
+    // A wing's end is a face that is a triangle over its edge, whose apex only the two faces beside
+    // it share and lies over the edge itself (well inside it).
+    std::vector<int> facesAt(skeleton.points.size(), 0);
+    for (const std::vector<uint32_t>& face : skeleton.faces)
+        for (uint32_t i : face) ++facesAt[i];
+    auto endApex = [&](const std::vector<uint32_t>& face) {
+        int apex = -1, corners = 0;
+        for (uint32_t i : face) skeleton.times[i] > 0.0 ? apex = int(i) : ++corners;
+        return face.size() == 3 && corners == 2 && apex >= 0 && facesAt[size_t(apex)] == 3 ? apex : -1;
+    };
+    struct Gable {
+        Vec2d a, b;
+        uint32_t top;
+    };
+    std::vector<Gable> gables;
+    std::vector<bool> isGable(skeleton.faces.size(), false);
+    StraightSkeleton moved = skeleton;
+    for (size_t f = 0; f < skeleton.faces.size(); ++f) {
+        const std::vector<uint32_t>& face = skeleton.faces[f];
+        const int apex = endApex(face);
+        if (apex < 0) continue;
+        size_t k = 0;
+        while (face[k] != uint32_t(apex)) ++k;
+        const Vec2d a = skeleton.points[face[(k + 1) % 3]], b = skeleton.points[face[(k + 2) % 3]];
+        const Vec2d n = skeleton.points[size_t(apex)];
+        const double along = ((n.x - a.x) * (b.x - a.x) + (n.y - a.y) * (b.y - a.y)) /
+                             ((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+        if (!(along > 0.05 && along < 0.95)) continue;
+        moved.points[size_t(apex)] = {a.x + along * (b.x - a.x), a.y + along * (b.y - a.y)};
+        gables.push_back({a, b, uint32_t(apex)});
+        isGable[f] = true;
+    }
+    if (gables.empty()) return false;
+    std::vector<std::vector<LevelPoint>> rings = skeletonRings(moved);
+    for (size_t f = rings.size(); f-- > 0;)
+        if (isGable[f]) rings.erase(rings.begin() + std::ptrdiff_t(f));
+    if (!forEachRingTriangle(rings, [&](const std::array<LevelPoint, 3>& tri, size_t) { emitProfiledTriangle(tri, profile, sink); }))
+        return false;
+    for (const Gable& g : gables) {
+        const Vec2d top = moved.points[g.top];
+        sink.wall(sink.at(g.a, 0.0), sink.at(g.b, 0.0), sink.at(top, profile.at(moved.times[g.top])));
+    }
+    return true;
+}
+
 void meshPyramidRoof(const Ring& outer, double height, RoofSink& sink) {
     const Vec3f apex = sink.at(areaCentroid(outer), height);
     for (size_t i = 0; i < outer.size(); ++i)

@@ -47,6 +47,13 @@ void meshRidgeRoof(const Polygon& polygon, const FootprintTriangles& footprint, 
 /// Returns false (emitting nothing) when a skeleton face cannot be triangulated.
 bool meshSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile& profile, RoofSink& sink);
 
+/// A gabled roof over a footprint of several wings (L, T, U...): the hipped roof of the straight
+/// skeleton with each wing's end hip turned into a vertical gable, its apex moved onto the end's
+/// edge at its own height (so the ridge runs to the gable). `profile` maps skeleton time to height
+/// and must be linear. Returns false (emitting nothing) when no wing end is found or a face cannot
+/// be triangulated.
+bool meshGabledSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile& profile, RoofSink& sink);
+
 /// A pyramid over a convex ring: one triangle per edge up to the area centroid, `height` m above the wall top.
 void meshPyramidRoof(const Ring& outer, double height, RoofSink& sink);
 
