@@ -179,8 +179,8 @@ URBIS_HD inline bool intersectPunchedFront(const WallRecord& wall, const CellLay
 /// traverseBvh); the template below fixes it at compile time.
 URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit, bool anyHit) {
     const WallRay r(wall, ray);
-    // Most rays that reach a wall in the BVH miss it: a leaf holds several walls, and the box of a
-    // wall that is not aligned with the axes is loose. One slab test turns them away.
+    // Many rays that reach a wall in the BVH miss it: the box of a wall that is not aligned with the
+    // axes is loose, and a leaf may hold several walls. One slab test turns them away.
     if (!reachesWallTile(wall, r, ray.tmax)) return false;
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, r, tmax, hit);

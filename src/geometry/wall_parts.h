@@ -19,8 +19,8 @@ struct WallPart {
 
 /// WallPart::axis of a box.
 inline constexpr uint8_t kWallPartBox = 3;
-/// The most parts a cell (or the margins) can have.
-inline constexpr int kMaxCellParts = 24;
+/// The most parts a cell (or the margins) can have: a punched cell with a balcony, both sides.
+inline constexpr int kMaxCellParts = 22;
 
 /// Per-window choices, the same for every ray: 1 in this many rooms is lit (by day: emissive).
 inline constexpr float kLitRoomChance = 0.3f;
