@@ -28,6 +28,24 @@ std::pair<float, float> ridgeSpread(const TriangleMesh& mesh) {
     return {x1 - x0, z1 - z0};
 }
 
+/// A generated city of 400 buildings, standing 0.5 m above the ground (so that each has a floor).
+CityModel generatedCity() {
+    LayoutParams params;
+    params.buildings = 400;
+    CityModel city = generateCity(params);
+    for (Building& b : city.buildings) b.minHeight = 0.5f;
+    return city;
+}
+
+/// How many of a city's buildings are not closed meshes.
+size_t leakyBuildings(const CityMesh& out, size_t buildings) {
+    std::vector<TriangleMesh> byBuilding(buildings);
+    for (size_t i = 0; i < out.mesh.size(); ++i) byBuilding[out.mesh.info[i].object - 1].add(out.mesh.triangles[i], out.mesh.info[i]);
+    size_t leaky = 0;
+    for (const TriangleMesh& m : byBuilding) leaky += openEdges(m) != 0;
+    return leaky;
+}
+
 } // namespace
 
 TEST(RoofShapes, EveryShapeIsWatertightOnEveryFootprint) {
@@ -66,22 +84,31 @@ TEST(RoofShapes, RealVillageFootprintsAreWatertightWithEveryShape) {
 
 TEST(RoofShapes, GeneratedCityRoofsAreWatertight) {
     // The layout's houses have gabled and hipped roofs with a roof:direction toward their street.
-    LayoutParams params;
-    params.buildings = 400;
-    CityModel city = generateCity(params);
+    const CityModel city = generatedCity();
     size_t sloped = 0;
-    for (Building& b : city.buildings) {
-        b.minHeight = 0.5f;
-        sloped += b.roofShape != RoofShape::Flat;
-    }
+    for (const Building& b : city.buildings) sloped += b.roofShape != RoofShape::Flat;
     EXPECT_GT(sloped, 20u);
     const CityMesh out = meshCity(city, massModel());
     EXPECT_TRUE(out.roofFallbacks.empty());
-    std::vector<TriangleMesh> byBuilding(city.buildings.size());
-    for (size_t i = 0; i < out.mesh.size(); ++i) byBuilding[out.mesh.info[i].object - 1].add(out.mesh.triangles[i], out.mesh.info[i]);
-    size_t leaky = 0;
-    for (const TriangleMesh& m : byBuilding) leaky += openEdges(m) != 0;
-    EXPECT_EQ(leaky, 0u);
+    EXPECT_EQ(leakyBuildings(out, city.buildings.size()), 0u);
+}
+
+TEST(RoofShapes, GabledWingsAreWatertightOnGeneratedFootprints) {
+    // The layout's L, T, U and courtyard footprints, gabled without a direction: a ridge and a gable
+    // per wing (or a ridge all round a courtyard), never the one-ridge fallback, always closed.
+    CityModel city = generatedCity();
+    size_t wings = 0;
+    for (Building& b : city.buildings) {
+        b.roofShape = RoofShape::Gabled;
+        b.roofDirection = -1;
+        b.roofAcross = false;
+        b.roofHeight = 0;
+        wings += b.footprint.outer.size() > 4 || !b.footprint.holes.empty();
+    }
+    EXPECT_GT(wings, 20u);
+    const CityMesh out = meshCity(city, massModel());
+    EXPECT_TRUE(out.roofFallbacks.empty()) << out.roofFallbacks.begin()->first;
+    EXPECT_EQ(leakyBuildings(out, city.buildings.size()), 0u);
 }
 
 TEST(RoofShapes, RidgeFollowsDirectionAndOrientation) {

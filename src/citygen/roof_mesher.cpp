@@ -166,7 +166,10 @@ RoofResult meshRoof(const Building& building, const FootprintTriangles& footprin
         break;
     }
     case RoofShape::Gabled:
-        if (skeleton && gablesPerWing && meshGabledSkeletonRoof(*skeleton, {{0, depth}, {0, height}}, sink)) break;
+        if (gablesPerWing) {
+            if (skeleton && meshGabledSkeletonRoof(*skeleton, {{0, depth}, {0, height}}, sink)) break;
+            result.fallbacks.push_back("gables_one_ridge");
+        }
         meshRidgeRoof(polygon, footprint, across, ridgeProfile(shape, lo, hi, height), sink);
         break;
     case RoofShape::Skillion: case RoofShape::Gambrel: case RoofShape::Round:

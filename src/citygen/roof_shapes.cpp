@@ -224,7 +224,6 @@ bool meshGabledSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile&
         gables.push_back({a, b, uint32_t(apex)});
         isGable[f] = true;
     }
-    if (gables.empty()) return false;
     std::vector<std::vector<LevelPoint>> rings = skeletonRings(moved);
     for (size_t f = rings.size(); f-- > 0;)
         if (isGable[f]) rings.erase(rings.begin() + std::ptrdiff_t(f));

@@ -49,8 +49,9 @@ bool meshSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile& profi
 
 /// A gabled roof over a footprint of several wings (L, T, U...): the hipped roof of the straight
 /// skeleton with each wing's end hip turned into a vertical gable, its apex moved onto the end's
-/// edge at its own height (so the ridge runs to the gable). `profile` maps skeleton time to height
-/// and must be linear. Returns false (emitting nothing) when no wing end is found or a face cannot
+/// edge at its own height (so the ridge runs to the gable). A footprint without wing ends (a ring
+/// around a courtyard) keeps the skeleton's roof, its ridge running all round. `profile` maps
+/// skeleton time to height and must be linear. Returns false (emitting nothing) when a face cannot
 /// be triangulated.
 bool meshGabledSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile& profile, RoofSink& sink);
 
