@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 
 using namespace urbis;
 using namespace urbis::test;
@@ -80,6 +81,21 @@ TEST(RoofShapes, RealVillageFootprintsAreWatertightWithEveryShape) {
         for (const auto& [reason, n] : fallbacks)
             EXPECT_TRUE(reason == "unknown_shape" || reason == "dome_not_round") << reason << " x" << n;
     }
+}
+
+TEST(RoofShapes, TheReadmeExampleHasEveryShapeWithoutAFallback) {
+    // docs/examples/roof_shapes.osm, the README's roof picture: 15 buildings, each roof as tagged.
+    CityModel example = importOsm(URBIS_EXAMPLES "/roof_shapes.osm", ImportOptions{});
+    ASSERT_EQ(example.buildings.size(), 15u);
+    std::set<RoofShape> shapes;
+    for (Building& b : example.buildings) {
+        shapes.insert(b.roofShape);
+        b.minHeight = 0.5f;   // a floor, so that each building is a closed mesh
+    }
+    EXPECT_EQ(shapes.size(), 10u);
+    const CityMesh out = meshCity(example, massModel());
+    EXPECT_TRUE(out.roofFallbacks.empty()) << out.roofFallbacks.begin()->first;
+    EXPECT_EQ(leakyBuildings(out, example.buildings.size()), 0u);
 }
 
 TEST(RoofShapes, GeneratedCityRoofsAreWatertight) {
