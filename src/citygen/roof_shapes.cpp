@@ -199,7 +199,10 @@ bool meshGabledSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile&
         for (uint32_t i : face) ++facesAt[i];
     auto endApex = [&](const std::vector<uint32_t>& face) {
         int apex = -1, corners = 0;
-        for (uint32_t i : face) skeleton.times[i] > 0.0 ? apex = int(i) : ++corners;
+        for (uint32_t i : face) {
+            if (skeleton.times[i] > 0.0) apex = int(i);
+            else ++corners;
+        }
         return face.size() == 3 && corners == 2 && apex >= 0 && facesAt[size_t(apex)] == 3 ? apex : -1;
     };
     struct Gable {
