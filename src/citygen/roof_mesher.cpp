@@ -170,8 +170,7 @@ RoofResult meshRoof(const Building& building, const FootprintTriangles& footprin
             if (skeleton && meshGabledSkeletonRoof(*skeleton, {{0, depth}, {0, height}}, sink)) break;
             result.fallbacks.push_back("gables_one_ridge");
         }
-        meshRidgeRoof(polygon, footprint, across, ridgeProfile(shape, lo, hi, height), sink);
-        break;
+        [[fallthrough]];  // one ridge across the footprint
     case RoofShape::Skillion: case RoofShape::Gambrel: case RoofShape::Round:
         meshRidgeRoof(polygon, footprint, across, ridgeProfile(shape, lo, hi, height), sink);
         break;
