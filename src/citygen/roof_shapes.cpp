@@ -227,9 +227,10 @@ bool meshGabledSkeletonRoof(const StraightSkeleton& skeleton, const RoofProfile&
         gables.push_back({a, b, uint32_t(apex)});
         isGable[f] = true;
     }
-    std::vector<std::vector<LevelPoint>> rings = skeletonRings(moved);
-    for (size_t f = rings.size(); f-- > 0;)
-        if (isGable[f]) rings.erase(rings.begin() + std::ptrdiff_t(f));
+    const std::vector<std::vector<LevelPoint>> faces = skeletonRings(moved);
+    std::vector<std::vector<LevelPoint>> rings;   // the roof's faces: all but the gables
+    for (size_t f = 0; f < faces.size(); ++f)
+        if (!isGable[f]) rings.push_back(faces[f]);
     if (!forEachRingTriangle(rings, [&](const std::array<LevelPoint, 3>& tri, size_t) { emitProfiledTriangle(tri, profile, sink); }))
         return false;
     for (const Gable& g : gables) {
