@@ -54,16 +54,38 @@ struct SegmentClip {
     URBIS_HD bool empty() const { return t0 > t1; }
 };
 
-/// Whether the ray's segment meets the box in wall coordinates that holds all of the tile
-/// (wallTileBounds is the same box in world space), widened by twice the parts' padding so that
-/// rounding never turns away a ray that a padded part at the tile's edge would stop.
-URBIS_HD inline bool reachesWallTile(const WallRecord& wall, const WallRay& r, float tmax) {
+/// The ray's segment inside the box in wall coordinates that holds all of the tile (wallTileBounds is
+/// the same box in world space), widened by twice the parts' padding so that rounding never turns
+/// away a ray that a padded part at the tile's edge would stop. Empty if the ray misses the tile.
+URBIS_HD inline SegmentClip wallTileSegment(const WallRecord& wall, const WallRay& r, float tmax) {
     constexpr float e = 2.0f * kWallPartPadding;
     SegmentClip s{r.tmin, tmax};
     s.clip(r.o.z, r.d.z, r.invD.z, -wall.reachBack() - e, wall.depthFront + e);
     s.clip(r.o.x, r.d.x, r.invD.x, wall.tileReachU0() - e, wall.tileReachU1() + e);
     s.clip(r.o.y, r.d.y, r.invD.y, wall.tileV0() - e, wall.tileV1() + e);
-    return !s.empty();
+    return s;
+}
+
+/// Metres inside the tile's edges where wallHitBound vouches for a hit: near an edge, rounding
+/// could let the ray pass between this tile and the next.
+inline constexpr float kWallBoundInset = 0.01f;
+
+/// An upper bound on the distance at which the ray hits the tile, without walking its cells, for a
+/// ray that starts in front of the wall plane and crosses it inward inside the tile: there the plane
+/// is solid (margins, frames) or opens into a cell that its glass plane closes (glass, or a curtain
+/// panel between mullions that reach back to it; the jambs close the sides of a punched opening), so
+/// the ray is stopped at the latest where it reaches w = -reveal. False (no bound) for any other ray.
+URBIS_HD inline bool wallHitBound(const WallRecord& wall, const WallRay& r, float tmax, float& bound) {
+    if (!(r.o.z > 0.0f && r.d.z < 0.0f)) return false;
+    const float t = -r.o.z * r.invD.z;
+    if (!(t > r.tmin && t < tmax)) return false;
+    const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y, inset = kWallBoundInset;
+    if (u < wall.tileU0() + inset || u > wall.tileU1() - inset || v < wall.tileV0() + inset ||
+        v > wall.tileV1() - inset)
+        return false;
+    // Beyond the padded glass plane, so that the glass's own hit (same formula) always comes first.
+    bound = (-wall.reveal - 4.0f * kWallPartPadding - r.o.z) * r.invD.z;
+    return true;
 }
 
 /// The world-space normal of a wall-space axis.
@@ -181,7 +203,13 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     const WallRay r(wall, ray);
     // Many rays that reach a wall in the BVH miss it: the box of a wall that is not aligned with the
     // axes is loose, and a leaf may hold several walls. One slab test turns them away.
-    if (!reachesWallTile(wall, r, ray.tmax)) return false;
+    if (wallTileSegment(wall, r, ray.tmax).empty()) return false;
+    // A shadow ray that surely hits needs no cell walked; its hit says only that it is blocked.
+    float bound;
+    if (anyHit && wallHitBound(wall, r, ray.tmax, bound) && bound < ray.tmax) {
+        hit = {bound, 2u, wall.wallMaterial, SurfacePart::Facade};
+        return true;
+    }
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, r, tmax, hit);
     if (found && anyHit) return true;
@@ -223,10 +251,12 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
         if (wall.style == WallStyle::Punched && side == CellSide::Front && !c.balcony &&
             intersectPunchedFront(wall, c, r, tmax, hit))
             return true;
+        const CellCoords coords = cellCoords(wall, c);
         const int parts = cellPartCount(wall, c, side);
         bool cellHit = false;
+        URBIS_NO_UNROLL
         for (int k = 0; k < parts && !(cellHit && anyHit); ++k)
-            cellHit |= intersectWallPart(cellPart(wall, c, side, k), r, tmax, hit);
+            cellHit |= intersectWallPart(cellPart(wall, c, coords, side, k), r, tmax, hit);
         if (cellHit) return true;
         if (tu < tv) {
             if (tu > s.t1 || tu > tmax) break;

@@ -98,94 +98,127 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
 // A cell's parts one at a time, by index, so that the intersector tests them in one loop: lanes of
 // a GPU warp at different parts of different cells still run the one part test together (a list
 // written part by part from some 30 places ran it at each place with a few lanes; docs/gpu_notes.md).
+// Each part is a recipe: which of the cell's coordinates (CellCoords) its corners take, its axis,
+// SurfacePart and material. One short piece of code builds every part from its recipe; a function
+// per part kind made the wall code too large for the GPU's instruction cache (docs/gpu_notes.md).
 // Punched cells number their parts: 0-3 the frame around the opening in the wall plane, 4-7 its
-// jambs, 8 the glass, 9-12 the room's front wall (the frame in the glass plane), 13-17 the room,
-// 18-21 the balcony (slab, front and side railings). Curtain-wall cells: 0-3 the half mullions on
-// the cell's edges, 4 the spandrel, 5 the glass, 6-10 the room.
+// jambs, 8 the glass, 9-12 the room's front wall (the frame in the glass plane), 13-17 the room
+// (back, sides, floor, ceiling), 18-21 the balcony (slab, front and side railings). Curtain-wall
+// cells: 0-3 the half mullions on the cell's edges, 4 the spandrel, 5 the glass, 6-10 the room.
 
-/// The room behind an opening: part q (0 back, 1 and 2 sides, 3 floor, 4 ceiling) of five quads
-/// inset from the cell by a thin inner wall, from w = -depthBack to w = front.
-URBIS_HD inline WallPart roomPart(const WallRecord& wall, const CellLayout& c, float front, int q) {
-    constexpr float kInset = 0.05f;
-    const float a = c.u0 + kInset, b = c.u1 - kInset, lo = c.v0 + kInset, hi = c.v1 - kInset, back = -wall.depthBack;
-    const uint32_t m = c.roomMaterial;
-    switch (q) {
-    case 0: return {{a, lo, back}, {b, hi, back}, 2, SurfacePart::Room, m};
-    case 1: return {{a, lo, back}, {a, hi, front}, 0, SurfacePart::Room, m};
-    case 2: return {{b, lo, back}, {b, hi, front}, 0, SurfacePart::Room, m};
-    case 3: return {{a, lo, back}, {b, lo, front}, 1, SurfacePart::Room, m};
-    default: return {{a, hi, back}, {b, hi, front}, 1, SurfacePart::Room, m};
-    }
-}
+/// The coordinates (wall space, metres) that a cell's parts are made of: u, then v, then w values.
+enum CellCoord : uint8_t {
+    U0, U1, OpeningU0, OpeningU1, RoomU0, RoomU1, BalconyU0, BalconyU1, RailU0, RailU1, MullionU0, MullionU1,
+    V0, V1, OpeningV0, OpeningV1, RoomV0, RoomV1, SlabTop, RailTop, MullionV0, MullionV1, PanelSplit,
+    WallPlane, GlassPlane, RoomBack, BalconyFront, RailBack, MullionFront,
+    kCellCoordCount
+};
 
-/// Part q of the four quads of the plane w around the cell's opening.
-URBIS_HD inline WallPart framePart(const CellLayout& c, float w, SurfacePart part, uint32_t material, int q) {
-    switch (q) {
-    case 0: return {{c.u0, c.v0, w}, {c.ou0, c.v1, w}, 2, part, material};
-    case 1: return {{c.ou1, c.v0, w}, {c.u1, c.v1, w}, 2, part, material};
-    case 2: return {{c.ou0, c.v0, w}, {c.ou1, c.ov0, w}, 2, part, material};
-    default: return {{c.ou0, c.ov1, w}, {c.ou1, c.v1, w}, 2, part, material};
-    }
-}
+/// The values of every CellCoord of one cell.
+struct CellCoords {
+    float at[kCellCoordCount];
+};
 
-/// Part q of the opening's four jambs, from the wall plane back to the glass.
-URBIS_HD inline WallPart jambPart(const WallRecord& wall, const CellLayout& c, int q) {
-    const float r = -wall.reveal;
-    const uint32_t m = wall.wallMaterial;
-    switch (q) {
-    case 0: return {{c.ou0, c.ov0, r}, {c.ou0, c.ov1, 0}, 0, SurfacePart::Jamb, m};
-    case 1: return {{c.ou1, c.ov0, r}, {c.ou1, c.ov1, 0}, 0, SurfacePart::Jamb, m};
-    case 2: return {{c.ou0, c.ov0, r}, {c.ou1, c.ov0, 0}, 1, SurfacePart::Jamb, m};
-    default: return {{c.ou0, c.ov1, r}, {c.ou1, c.ov1, 0}, 1, SurfacePart::Jamb, m};
-    }
-}
-
-/// Part q of a balcony in front of the opening: a slab on the cell's floor and a railing (front and
-/// two sides) around it, depthFront metres deep.
-URBIS_HD inline WallPart balconyPart(const WallRecord& wall, const CellLayout& c, int q) {
-    constexpr float kSlab = 0.15f, kRail = 0.05f, kRailHeight = 1.0f;
-    const float a = fmaxf(c.u0 + 0.1f, c.ou0 - 0.6f), b = fminf(c.u1 - 0.1f, c.ou1 + 0.6f), f = wall.depthFront;
-    const uint32_t rail = wall.facadeMaterials + uint32_t(FacadeMaterial::Railing);
-    const float top = c.v0 + kSlab, railTop = top + kRailHeight;
-    switch (q) {
-    case 0: return {{a, c.v0, 0}, {b, top, f}, kWallPartBox, SurfacePart::BalconySlab,
-                    wall.facadeMaterials + uint32_t(FacadeMaterial::Slab)};
-    case 1: return {{a, top, f - kRail}, {b, railTop, f}, kWallPartBox, SurfacePart::Railing, rail};
-    case 2: return {{a, top, 0}, {a + kRail, railTop, f - kRail}, kWallPartBox, SurfacePart::Railing, rail};
-    default: return {{b - kRail, top, 0}, {b, railTop, f - kRail}, kWallPartBox, SurfacePart::Railing, rail};
-    }
-}
-
-/// Part q (numbered as above) of a curtain-wall panel filling the cell: half mullions on its four
-/// edges, a spandrel below wall.sillHeight and glass above it, both `reveal` deep, and the room.
-URBIS_HD inline WallPart curtainPart(const WallRecord& wall, const CellLayout& c, int q) {
+/// A cell's coordinates: its edges, its opening's, the room inset from the cell by a thin inner
+/// wall, a balcony's slab and railing around the opening, a curtain panel's mullions and the split
+/// between its spandrel and glass.
+URBIS_HD inline CellCoords cellCoords(const WallRecord& wall, const CellLayout& c) {
+    constexpr float kInset = 0.05f, kSlab = 0.15f, kRail = 0.05f, kRailHeight = 1.0f;
     constexpr float kHalfMullion = 0.06f, kMullionDepth = 0.12f;
-    const float r = -wall.reveal, m = kHalfMullion, split = c.v0 + wall.sillHeight;
-    const uint32_t mullion = wall.facadeMaterials + uint32_t(FacadeMaterial::Mullion);
-    switch (q) {
-    case 0: return {{c.u0, c.v0, r}, {c.u0 + m, c.v1, kMullionDepth}, kWallPartBox, SurfacePart::Mullion, mullion};
-    case 1: return {{c.u1 - m, c.v0, r}, {c.u1, c.v1, kMullionDepth}, kWallPartBox, SurfacePart::Mullion, mullion};
-    case 2: return {{c.u0 + m, c.v0, r}, {c.u1 - m, c.v0 + m, kMullionDepth}, kWallPartBox, SurfacePart::Mullion, mullion};
-    case 3: return {{c.u0 + m, c.v1 - m, r}, {c.u1 - m, c.v1, kMullionDepth}, kWallPartBox, SurfacePart::Mullion, mullion};
-    case 4: return {{c.u0 + m, c.v0 + m, r}, {c.u1 - m, split, r}, 2, SurfacePart::Spandrel,
-                    wall.facadeMaterials + uint32_t(FacadeMaterial::Spandrel)};
-    case 5: return {{c.u0 + m, split, r}, {c.u1 - m, c.v1 - m, r}, 2, SurfacePart::Glass,
-                    wall.facadeMaterials + uint32_t(FacadeMaterial::Glass)};
-    default: return roomPart(wall, c, r, q - 6);
-    }
+    CellCoords k;
+    float* at = k.at;
+    at[U0] = c.u0, at[U1] = c.u1, at[OpeningU0] = c.ou0, at[OpeningU1] = c.ou1;
+    at[RoomU0] = c.u0 + kInset, at[RoomU1] = c.u1 - kInset;
+    at[BalconyU0] = fmaxf(c.u0 + 0.1f, c.ou0 - 0.6f), at[BalconyU1] = fminf(c.u1 - 0.1f, c.ou1 + 0.6f);
+    at[RailU0] = at[BalconyU0] + kRail, at[RailU1] = at[BalconyU1] - kRail;
+    at[MullionU0] = c.u0 + kHalfMullion, at[MullionU1] = c.u1 - kHalfMullion;
+    at[V0] = c.v0, at[V1] = c.v1, at[OpeningV0] = c.ov0, at[OpeningV1] = c.ov1;
+    at[RoomV0] = c.v0 + kInset, at[RoomV1] = c.v1 - kInset;
+    at[SlabTop] = c.v0 + kSlab, at[RailTop] = at[SlabTop] + kRailHeight;
+    at[MullionV0] = c.v0 + kHalfMullion, at[MullionV1] = c.v1 - kHalfMullion, at[PanelSplit] = c.v0 + wall.sillHeight;
+    at[WallPlane] = 0.0f, at[GlassPlane] = -wall.reveal, at[RoomBack] = -wall.depthBack;
+    at[BalconyFront] = wall.depthFront, at[RailBack] = wall.depthFront - kRail, at[MullionFront] = kMullionDepth;
+    return k;
 }
 
-/// Part q (numbered as above) of a punched cell.
-URBIS_HD inline WallPart punchedPart(const WallRecord& wall, const CellLayout& c, int q) {
-    const float r = -wall.reveal;
-    if (q < 4) return framePart(c, 0.0f, SurfacePart::Facade, wall.wallMaterial, q);
-    if (q < 8) return jambPart(wall, c, q - 4);
-    if (q == 8)
-        return {{c.ou0, c.ov0, r}, {c.ou1, c.ov1, r}, 2, SurfacePart::Glass,
-                wall.facadeMaterials + uint32_t(FacadeMaterial::Glass)};
-    if (q < 13) return framePart(c, r, SurfacePart::Room, c.roomMaterial, q - 9);
-    if (q < 18) return roomPart(wall, c, r, q - 13);
-    return balconyPart(wall, c, q - 18);
+/// A part's material: the wall's own, the cell's room, or one of the facade's (FacadeMaterial).
+enum class PartMaterial : uint8_t { Wall, Room, Facade };
+
+/// A part as 40 bits: six CellCoords (5 bits each: lo u v w, hi u v w), the axis (2 bits: a quad's
+/// normal, or kWallPartBox), the SurfacePart (4 bits) and the material (4 bits: 0 the wall's, 1 the
+/// room's, 2 + n FacadeMaterial n).
+using PartRecipe = uint64_t;
+
+URBIS_HD constexpr PartRecipe partRecipe(CellCoord lu, CellCoord lv, CellCoord lw, CellCoord hu, CellCoord hv, CellCoord hw,
+                                uint8_t axis, SurfacePart part, uint32_t material) {
+    return PartRecipe(lu) | PartRecipe(lv) << 5 | PartRecipe(lw) << 10 | PartRecipe(hu) << 15 | PartRecipe(hv) << 20 |
+           PartRecipe(hw) << 25 | PartRecipe(axis) << 30 | PartRecipe(part) << 32 | PartRecipe(material) << 36;
+}
+constexpr uint32_t kWallMaterialCode = 0, kRoomMaterialCode = 1;
+URBIS_HD constexpr uint32_t facadeMaterialCode(FacadeMaterial m) { return 2 + uint32_t(m); }
+
+/// First recipe of a curtain-wall cell in kPartRecipes (the punched cell's come first).
+inline constexpr int kCurtainRecipes = 22;
+
+/// Every part's recipe: punched cells' parts 0-21, then curtain-wall cells' parts 0-5 (half mullions
+/// reaching from the glass plane out to MullionFront, a spandrel below the panel split and glass
+/// above it); a curtain-wall cell's room is the punched cell's. A table, not a switch, so that lanes
+/// of a GPU warp at different parts load their recipes together instead of taking turns.
+URBIS_TABLE PartRecipe kPartRecipes[] = {
+    partRecipe(U0, V0, WallPlane, OpeningU0, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
+    partRecipe(OpeningU1, V0, WallPlane, U1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
+    partRecipe(OpeningU0, V0, WallPlane, OpeningU1, OpeningV0, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
+    partRecipe(OpeningU0, OpeningV1, WallPlane, OpeningU1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
+    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU0, OpeningV1, WallPlane, 0, SurfacePart::Jamb, kWallMaterialCode),
+    partRecipe(OpeningU1, OpeningV0, GlassPlane, OpeningU1, OpeningV1, WallPlane, 0, SurfacePart::Jamb, kWallMaterialCode),
+    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV0, WallPlane, 1, SurfacePart::Jamb, kWallMaterialCode),
+    partRecipe(OpeningU0, OpeningV1, GlassPlane, OpeningU1, OpeningV1, WallPlane, 1, SurfacePart::Jamb, kWallMaterialCode),
+    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV1, GlassPlane, 2, SurfacePart::Glass,
+               facadeMaterialCode(FacadeMaterial::Glass)),
+    partRecipe(U0, V0, GlassPlane, OpeningU0, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe(OpeningU1, V0, GlassPlane, U1, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe(OpeningU0, V0, GlassPlane, OpeningU1, OpeningV0, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe(OpeningU0, OpeningV1, GlassPlane, OpeningU1, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe(RoomU0, RoomV0, RoomBack, RoomU1, RoomV1, RoomBack, 2, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe(RoomU0, RoomV0, RoomBack, RoomU0, RoomV1, GlassPlane, 0, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe(RoomU1, RoomV0, RoomBack, RoomU1, RoomV1, GlassPlane, 0, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe(RoomU0, RoomV0, RoomBack, RoomU1, RoomV0, GlassPlane, 1, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe(RoomU0, RoomV1, RoomBack, RoomU1, RoomV1, GlassPlane, 1, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe(BalconyU0, V0, WallPlane, BalconyU1, SlabTop, BalconyFront, kWallPartBox, SurfacePart::BalconySlab,
+               facadeMaterialCode(FacadeMaterial::Slab)),
+    partRecipe(BalconyU0, SlabTop, RailBack, BalconyU1, RailTop, BalconyFront, kWallPartBox, SurfacePart::Railing,
+               facadeMaterialCode(FacadeMaterial::Railing)),
+    partRecipe(BalconyU0, SlabTop, WallPlane, RailU0, RailTop, RailBack, kWallPartBox, SurfacePart::Railing,
+               facadeMaterialCode(FacadeMaterial::Railing)),
+    partRecipe(RailU1, SlabTop, WallPlane, BalconyU1, RailTop, RailBack, kWallPartBox, SurfacePart::Railing,
+               facadeMaterialCode(FacadeMaterial::Railing)),
+    partRecipe(U0, V0, GlassPlane, MullionU0, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion)),
+    partRecipe(MullionU1, V0, GlassPlane, U1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion)),
+    partRecipe(MullionU0, V0, GlassPlane, MullionU1, MullionV0, MullionFront, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion)),
+    partRecipe(MullionU0, MullionV1, GlassPlane, MullionU1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion)),
+    partRecipe(MullionU0, MullionV0, GlassPlane, MullionU1, PanelSplit, GlassPlane, 2, SurfacePart::Spandrel,
+               facadeMaterialCode(FacadeMaterial::Spandrel)),
+    partRecipe(MullionU0, PanelSplit, GlassPlane, MullionU1, MullionV1, GlassPlane, 2, SurfacePart::Glass,
+               facadeMaterialCode(FacadeMaterial::Glass)),
+};
+
+/// The part that `recipe` makes of a cell with coordinates `k`.
+URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout& c, const CellCoords& k, PartRecipe recipe) {
+    const auto coord = [&](int shift) { return k.at[(recipe >> shift) & 31u]; };
+    const uint32_t material = uint32_t(recipe >> 36) & 15u;
+    WallPart p;
+    p.lo = {coord(0), coord(5), coord(10)};
+    p.hi = {coord(15), coord(20), coord(25)};
+    p.axis = uint8_t((recipe >> 30) & 3u);
+    p.part = SurfacePart((recipe >> 32) & 15u);
+    p.material = material == kWallMaterialCode ? wall.wallMaterial
+                 : material == kRoomMaterialCode ? c.roomMaterial
+                                                 : wall.facadeMaterials + (material - facadeMaterialCode(FacadeMaterial(0)));
+    return p;
 }
 
 /// How many parts of the cell lie on `side` of its glass plane (all lie within the cell's column
@@ -197,18 +230,23 @@ URBIS_HD inline int cellPartCount(const WallRecord& wall, const CellLayout& c, C
     return (side == CellSide::Front ? 9 : (side == CellSide::Back ? 10 : 18)) + balcony;
 }
 
-/// Part k < cellPartCount of the cell on `side`: the numbering above without the other side's parts.
-URBIS_HD inline WallPart cellPart(const WallRecord& wall, const CellLayout& c, CellSide side, int k) {
-    if (wall.style == WallStyle::Curtain) return curtainPart(wall, c, k);
-    if (side == CellSide::Back) return punchedPart(wall, c, k + 8);
-    return punchedPart(wall, c, side == CellSide::Front && k >= 9 ? k + 9 : k);
+/// Part k < cellPartCount of the cell on `side` (coordinates k from cellCoords): the numbering above
+/// without the other side's parts.
+URBIS_HD inline WallPart cellPart(const WallRecord& wall, const CellLayout& c, const CellCoords& coords, CellSide side,
+                                  int k) {
+    int recipe;
+    if (wall.style == WallStyle::Curtain) recipe = k < 6 ? kCurtainRecipes + k : k + 7;
+    else if (side == CellSide::Back) recipe = k + 8;
+    else recipe = side == CellSide::Front && k >= 9 ? k + 9 : k;
+    return partFromRecipe(wall, c, coords, kPartRecipes[recipe]);
 }
 
 /// Every part of cell (floor, slot) of `wall` on `side`, drawing its layout from its hash.
 URBIS_HD inline void cellParts(const WallRecord& wall, uint32_t floor, uint32_t slot, CellSide side, CellParts& out) {
     const CellLayout c = cellLayout(wall, floor, slot);
+    const CellCoords coords = cellCoords(wall, c);
     const int n = cellPartCount(wall, c, side);
-    for (int k = 0; k < n; ++k) out.add(cellPart(wall, c, side, k));
+    for (int k = 0; k < n; ++k) out.add(cellPart(wall, c, coords, side, k));
 }
 
 } // namespace urbis
