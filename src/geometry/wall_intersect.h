@@ -165,28 +165,47 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const WallRay&
     return intersectWallPart(inner, r, tmax, hit) || found;
 }
 
-/// The common case of a punched cell without a balcony, for a ray in front of the glass: where the
-/// ray crosses the wall plane inside the cell, it hits the frame around the opening, or passes the
-/// opening and hits the glass if it still lies inside the opening there. Returns false, deciding
-/// nothing, in every other case (the caller then tests the cell's parts).
-URBIS_HD inline bool intersectPunchedFront(const WallRecord& wall, const CellLayout& c, const WallRay& r, float& tmax,
-                                           WallHit& hit) {
-    if (!(r.o.z > 0.0f && r.d.z < 0.0f)) return false;
-    const float t = -r.o.z * r.invD.z;
-    if (!(t > r.tmin && t < tmax)) return false;
-    const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
-    if (u < c.u0 || u > c.u1 || v < c.v0 || v > c.v1) return false;
-    if (u < c.ou0 || u > c.ou1 || v < c.ov0 || v > c.ov1) {
-        tmax = t;
-        hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
-        return true;
+/// What a closed-form test of one cell decided.
+enum class CellTest : uint8_t { Miss, Hit, Undecided };
+
+/// The front side of a punched cell without a balcony, in closed form. There the cell is a solid
+/// wall (w <= 0) with the opening cut into it back to the glass: a ray from in front hits the frame
+/// where it crosses the wall plane outside the opening, and a ray inside the opening (from in front,
+/// or starting there: off the glass or a jamb) hits a jamb where it leaves the opening sideways, else
+/// the glass if it reaches the glass plane first. A ray from in front that crosses the wall plane
+/// outside the cell misses it (it meets that other cell or margin first). Undecided, for the caller
+/// to test the cell's parts, for a ray that starts elsewhere or within tmin of the wall plane.
+URBIS_HD inline CellTest intersectPunchedFront(const WallRecord& wall, const CellLayout& c, const WallRay& r, float& tmax,
+                                               WallHit& hit) {
+    const auto inOpening = [&](float u, float v) { return u >= c.ou0 && u <= c.ou1 && v >= c.ov0 && v <= c.ov1; };
+    if (r.o.z > 0.0f) {
+        if (!(r.d.z < 0.0f)) return CellTest::Miss;
+        const float t = -r.o.z * r.invD.z;
+        if (!(t > r.tmin)) return CellTest::Undecided;
+        if (!(t < tmax)) return CellTest::Miss;
+        const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
+        if (u < c.u0 || u > c.u1 || v < c.v0 || v > c.v1) return CellTest::Miss;
+        if (!inOpening(u, v)) {
+            tmax = t;
+            hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
+            return CellTest::Hit;
+        }
+    } else if (!(r.o.z >= -wall.reveal && inOpening(r.o.x, r.o.y))) {
+        return CellTest::Undecided;
     }
-    const float tg = (-wall.reveal - r.o.z) * r.invD.z;
-    const float ug = r.o.x + tg * r.d.x, vg = r.o.y + tg * r.d.y;
-    if (!(tg < tmax) || ug < c.ou0 || ug > c.ou1 || vg < c.ov0 || vg > c.ov1) return false;
-    tmax = tg;
-    hit = {tg, 2u, wall.facadeMaterials + uint32_t(FacadeMaterial::Glass), SurfacePart::Glass};
-    return true;
+    // Inside the opening: where the ray leaves it sideways (a jamb), through the glass plane, or back
+    // out through the wall plane (nothing then: no balcony).
+    const float tu = r.d.x == 0.0f ? 3.0e38f : ((r.d.x > 0.0f ? c.ou1 : c.ou0) - r.o.x) * r.invD.x;
+    const float tv = r.d.y == 0.0f ? 3.0e38f : ((r.d.y > 0.0f ? c.ov1 : c.ov0) - r.o.y) * r.invD.y;
+    const float tSide = fminf(tu, tv);
+    const float tPlane = r.d.z == 0.0f ? 3.0e38f : ((r.d.z < 0.0f ? -wall.reveal : 0.0f) - r.o.z) * r.invD.z;
+    const bool glass = r.d.z < 0.0f && tPlane <= tSide;
+    const float t = glass ? tPlane : tSide;
+    if (!(t > r.tmin && t < tmax) || (!glass && !(tSide < tPlane))) return CellTest::Miss;
+    tmax = t;
+    if (glass) hit = {t, 2u, wall.facadeMaterials + uint32_t(FacadeMaterial::Glass), SurfacePart::Glass};
+    else hit = {t, tu < tv ? 0u : 1u, wall.wallMaterial, SurfacePart::Jamb};
+    return CellTest::Hit;
 }
 
 /// The closest (AnyHit = false) or any (AnyHit = true) hit of `ray` on `wall` (on its tile: see
@@ -248,16 +267,19 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     float tu = nextU(i), tv = nextV(j);
     for (;;) {
         const CellLayout c = cellLayout(wall, uint32_t(j), uint32_t(i));
-        if (wall.style == WallStyle::Punched && side == CellSide::Front && !c.balcony &&
-            intersectPunchedFront(wall, c, r, tmax, hit))
-            return true;
-        const CellCoords coords = cellCoords(wall, c);
-        const int parts = cellPartCount(wall, c, side);
-        bool cellHit = false;
-        URBIS_NO_UNROLL
-        for (int k = 0; k < parts && !(cellHit && anyHit); ++k)
-            cellHit |= intersectWallPart(cellPart(wall, c, coords, side, k), r, tmax, hit);
-        if (cellHit) return true;
+        CellTest test = CellTest::Undecided;
+        if (side == CellSide::Front && wall.style == WallStyle::Punched && !c.balcony)
+            test = intersectPunchedFront(wall, c, r, tmax, hit);
+        if (test == CellTest::Undecided) {
+            const CellCoords coords = cellCoords(wall, c);
+            const int parts = cellPartCount(wall, c, side);
+            bool cellHit = false;
+            URBIS_NO_UNROLL
+            for (int k = 0; k < parts && !(cellHit && anyHit); ++k)
+                cellHit |= intersectWallPart(cellPart(wall, c, coords, side, k), r, tmax, hit);
+            test = cellHit ? CellTest::Hit : CellTest::Miss;
+        }
+        if (test == CellTest::Hit) return true;
         if (tu < tv) {
             if (tu > s.t1 || tu > tmax) break;
             i += stepI;
