@@ -52,17 +52,29 @@ struct SegmentClip {
         t1 = far < t1 ? far : t1;
     }
     URBIS_HD bool empty() const { return t0 > t1; }
+
+    /// Keeps the segment inside the box lo..hi on the first `axes` axes (u, v, w) of wall
+    /// coordinates: a loop rather than a copy per axis, for the GPU's instruction cache.
+    URBIS_HD void clipToBox(const WallRay& r, Vec3f lo, Vec3f hi, int axes) {
+        URBIS_NO_UNROLL
+        for (int a = 0; a < axes; ++a) clip(r.o[a], r.d[a], r.invD[a], lo[a], hi[a]);
+    }
+};
+
+/// The tile's extent in u and v (WallRecord::tileU0 and the others), worked out once per wall test.
+struct TileRect {
+    float u0, u1, v0, v1;
+    URBIS_HD explicit TileRect(const WallRecord& w) : u0(w.tileU0()), u1(w.tileU1()), v0(w.tileV0()), v1(w.tileV1()) {}
 };
 
 /// The ray's segment inside the box in wall coordinates that holds all of the tile (wallTileBounds is
 /// the same box in world space), widened by twice the parts' padding so that rounding never turns
 /// away a ray that a padded part at the tile's edge would stop. Empty if the ray misses the tile.
-URBIS_HD inline SegmentClip wallTileSegment(const WallRecord& wall, const WallRay& r, float tmax) {
+URBIS_HD inline SegmentClip wallTileSegment(const WallRecord& wall, const TileRect& tile, const WallRay& r, float tmax) {
     constexpr float e = 2.0f * kWallPartPadding;
     SegmentClip s{r.tmin, tmax};
-    s.clip(r.o.z, r.d.z, r.invD.z, -wall.reachBack() - e, wall.depthFront + e);
-    s.clip(r.o.x, r.d.x, r.invD.x, wall.tileReachU0() - e, wall.tileReachU1() + e);
-    s.clip(r.o.y, r.d.y, r.invD.y, wall.tileV0() - e, wall.tileV1() + e);
+    s.clipToBox(r, {wall.tileReachU0() - e, tile.v0 - e, -wall.reachBack() - e},
+                {wall.tileReachU1() + e, tile.v1 + e, wall.depthFront + e}, 3);
     return s;
 }
 
@@ -75,14 +87,13 @@ inline constexpr float kWallBoundInset = 0.01f;
 /// is solid (margins, frames) or opens into a cell that its glass plane closes (glass, or a curtain
 /// panel between mullions that reach back to it; the jambs close the sides of a punched opening), so
 /// the ray is stopped at the latest where it reaches w = -reveal. False (no bound) for any other ray.
-URBIS_HD inline bool wallHitBound(const WallRecord& wall, const WallRay& r, float tmax, float& bound) {
+URBIS_HD inline bool wallHitBound(const WallRecord& wall, const TileRect& tile, const WallRay& r, float tmax,
+                                  float& bound) {
     if (!(r.o.z > 0.0f && r.d.z < 0.0f)) return false;
     const float t = -r.o.z * r.invD.z;
     if (!(t > r.tmin && t < tmax)) return false;
     const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y, inset = kWallBoundInset;
-    if (u < wall.tileU0() + inset || u > wall.tileU1() - inset || v < wall.tileV0() + inset ||
-        v > wall.tileV1() - inset)
-        return false;
+    if (u < tile.u0 + inset || u > tile.u1 - inset || v < tile.v0 + inset || v > tile.v1 - inset) return false;
     // Beyond the padded glass plane, so that the glass's own hit (same formula) always comes first.
     bound = (-wall.reveal - 4.0f * kWallPartPadding - r.o.z) * r.invD.z;
     return true;
@@ -126,13 +137,14 @@ URBIS_HD inline bool intersectWallPart(const WallPart& p, const WallRay& r, floa
 
 /// The margins around the grid: the plane w = 0 where it lies in the wall (in the record's tile:
 /// see WallRecord::slot0) but not inside the grid.
-URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const WallRay& r, float& tmax, WallHit& hit) {
+URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const TileRect& tile, const WallRay& r, float& tmax,
+                                          WallHit& hit) {
     constexpr float e = kWallPartPadding;
     if (r.d.z == 0.0f) return false;
     const float t = -r.o.z * r.invD.z;
     if (!(t > r.tmin && t < tmax)) return false;
     const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
-    if (u < wall.tileU0() - e || u > wall.tileU1() + e || v < wall.tileV0() - e || v > wall.tileV1() + e) return false;
+    if (u < tile.u0 - e || u > tile.u1 + e || v < tile.v0 - e || v > tile.v1 + e) return false;
     const bool inGrid = u > wall.gridU + e && u < wall.gridU + wall.gridWidth() - e && v > wall.gridV + e &&
                         v < wall.gridV + wall.gridHeight() - e;
     if (inGrid) return false;
@@ -143,11 +155,12 @@ URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const WallRay&
 
 /// The parapet's top and inner face (wall_parapet.h). A tile has it only where it reaches the
 /// wall's top, over its own u range (open at the wall's ends, where the mitres reach beyond them).
-URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const WallRay& r, float& tmax, WallHit& hit) {
+URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect& tile, const WallRay& r, float& tmax,
+                                          WallHit& hit) {
     if (!(wall.parapetHeight > 0.0f) || wall.tileFloorEnd() < int(wall.floors)) return false;
     constexpr float e = kWallPartPadding;
-    const float uLo = wall.slot0 == 0 ? -3.0e38f : wall.tileU0();
-    const float uHi = wall.tileSlotEnd() >= int(wall.slots) ? 3.0e38f : wall.tileU1();
+    const float uLo = wall.slot0 == 0 ? -3.0e38f : tile.u0;
+    const float uHi = wall.tileSlotEnd() >= int(wall.slots) ? 3.0e38f : tile.u1;
     bool found = false;
     if (r.d.y != 0.0f) {
         const float t = (wall.height - r.o.y) * r.invD.y;
@@ -222,17 +235,18 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     const WallRay r(wall, ray);
     // Many rays that reach a wall in the BVH miss it: the box of a wall that is not aligned with the
     // axes is loose, and a leaf may hold several walls. One slab test turns them away.
-    if (wallTileSegment(wall, r, ray.tmax).empty()) return false;
+    const TileRect tile(wall);
+    if (wallTileSegment(wall, tile, r, ray.tmax).empty()) return false;
     // A shadow ray that surely hits needs no cell walked; its hit says only that it is blocked.
     float bound;
-    if (anyHit && wallHitBound(wall, r, ray.tmax, bound) && bound < ray.tmax) {
+    if (anyHit && wallHitBound(wall, tile, r, ray.tmax, bound) && bound < ray.tmax) {
         hit = {bound, 2u, wall.wallMaterial, SurfacePart::Facade};
         return true;
     }
     float tmax = ray.tmax;
-    bool found = intersectWallMargins(wall, r, tmax, hit);
+    bool found = intersectWallMargins(wall, tile, r, tmax, hit);
     if (found && anyHit) return true;
-    found |= intersectWallParapet(wall, r, tmax, hit);
+    found |= intersectWallParapet(wall, tile, r, tmax, hit);
     if (found && anyHit) return true;
     const int slot0 = wall.slot0, slotEnd = wall.tileSlotEnd(), floor0 = wall.floor0, floorEnd = wall.tileFloorEnd();
     if (slot0 >= slotEnd || floor0 >= floorEnd) return found;
@@ -243,12 +257,11 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     const float hi[2] = {wall.gridU + wall.slotWidth * float(slotEnd) + e,
                          wall.gridV + wall.floorHeight * float(floorEnd) + e};
     SegmentClip s{r.tmin, tmax};
-    s.clip(r.o.x, r.d.x, r.invD.x, lo[0], hi[0]);
-    s.clip(r.o.y, r.d.y, r.invD.y, lo[1], hi[1]);
+    s.clipToBox(r, {lo[0], lo[1], 0.0f}, {hi[0], hi[1], 0.0f}, 2);
     if (s.empty()) return found;
     const CellSide side = r.o.z + s.t0 * r.d.z > -wall.reveal ? CellSide::Front : CellSide::Back;
-    if (side == CellSide::Front) s.clip(r.o.z, r.d.z, r.invD.z, -wall.reveal - e, wall.depthFront + e);
-    else s.clip(r.o.z, r.d.z, r.invD.z, -wall.depthBack - e, -wall.reveal + e);
+    const bool front = side == CellSide::Front;
+    s.clip(r.o.z, r.d.z, r.invD.z, (front ? -wall.reveal : -wall.depthBack) - e, (front ? wall.depthFront : -wall.reveal) + e);
     if (s.empty()) return found;
     // The cell of the entry point, and the distances to the next column and row boundaries.
     const float pu = r.o.x + s.t0 * r.d.x, pv = r.o.y + s.t0 * r.d.y;
