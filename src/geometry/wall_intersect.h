@@ -67,36 +67,15 @@ struct TileRect {
     URBIS_HD explicit TileRect(const WallRecord& w) : u0(w.tileU0()), u1(w.tileU1()), v0(w.tileV0()), v1(w.tileV1()) {}
 };
 
-/// The ray's segment inside the box in wall coordinates that holds all of the tile (wallTileBounds is
-/// the same box in world space), widened by twice the parts' padding so that rounding never turns
-/// away a ray that a padded part at the tile's edge would stop. Empty if the ray misses the tile.
-URBIS_HD inline SegmentClip wallTileSegment(const WallRecord& wall, const TileRect& tile, const WallRay& r, float tmax) {
+/// Whether the ray's segment meets the box in wall coordinates that holds all of the tile
+/// (wallTileBounds is the same box in world space), widened by twice the parts' padding so that
+/// rounding never turns away a ray that a padded part at the tile's edge would stop.
+URBIS_HD inline bool reachesWallTile(const WallRecord& wall, const TileRect& tile, const WallRay& r, float tmax) {
     constexpr float e = 2.0f * kWallPartPadding;
     SegmentClip s{r.tmin, tmax};
     s.clipToBox(r, {wall.tileReachU0() - e, tile.v0 - e, -wall.reachBack() - e},
                 {wall.tileReachU1() + e, tile.v1 + e, wall.depthFront + e}, 3);
-    return s;
-}
-
-/// Metres inside the tile's edges where wallHitBound vouches for a hit: near an edge, rounding
-/// could let the ray pass between this tile and the next.
-inline constexpr float kWallBoundInset = 0.01f;
-
-/// An upper bound on the distance at which the ray hits the tile, without walking its cells, for a
-/// ray that starts in front of the wall plane and crosses it inward inside the tile: there the plane
-/// is solid (margins, frames) or opens into a cell that its glass plane closes (glass, or a curtain
-/// panel between mullions that reach back to it; the jambs close the sides of a punched opening), so
-/// the ray is stopped at the latest where it reaches w = -reveal. False (no bound) for any other ray.
-URBIS_HD inline bool wallHitBound(const WallRecord& wall, const TileRect& tile, const WallRay& r, float tmax,
-                                  float& bound) {
-    if (!(r.o.z > 0.0f && r.d.z < 0.0f)) return false;
-    const float t = -r.o.z * r.invD.z;
-    if (!(t > r.tmin && t < tmax)) return false;
-    const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y, inset = kWallBoundInset;
-    if (u < tile.u0 + inset || u > tile.u1 - inset || v < tile.v0 + inset || v > tile.v1 - inset) return false;
-    // Beyond the padded glass plane, so that the glass's own hit (same formula) always comes first.
-    bound = (-wall.reveal - 4.0f * kWallPartPadding - r.o.z) * r.invD.z;
-    return true;
+    return !s.empty();
 }
 
 /// The world-space normal of a wall-space axis.
@@ -236,13 +215,7 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     // Many rays that reach a wall in the BVH miss it: the box of a wall that is not aligned with the
     // axes is loose, and a leaf may hold several walls. One slab test turns them away.
     const TileRect tile(wall);
-    if (wallTileSegment(wall, tile, r, ray.tmax).empty()) return false;
-    // A shadow ray that surely hits needs no cell walked; its hit says only that it is blocked.
-    float bound;
-    if (anyHit && wallHitBound(wall, tile, r, ray.tmax, bound) && bound < ray.tmax) {
-        hit = {bound, 2u, wall.wallMaterial, SurfacePart::Facade};
-        return true;
-    }
+    if (!reachesWallTile(wall, tile, r, ray.tmax)) return false;
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, tile, r, tmax, hit);
     if (found && anyHit) return true;
