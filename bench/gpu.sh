@@ -4,7 +4,9 @@
 # 100k-building city, and renders one image per backend. Logs and JSON go to $OUT (default
 # ./gpu-out): gpu.log, bench_*.json, sf_gpu.png. Dependencies: $URBIS_DEPS (default ./.deps) with
 # root/usr (headers and libraries, dpkg -x) and data/ (sf_downtown_2023.osm.pbf, the Bavarian village).
-# Usage: bench/gpu.sh [steps], steps a comma list of build,test,bench,cpu (default all).
+# Usage: bench/gpu.sh [steps], steps a comma list of build,test,bench,cpu (default all) and profile
+# (not by default: Nsight Compute on one render kernel launch of each representation, generated city
+# at 40 m, joined with the kernel's line table by bench/sass_lines.py; build with -lineinfo for it).
 # Environment: URBIS_BUILD_DIR (build), URBIS_CUDA_FMAD (OFF), URBIS_CUDA_FLAGS (extra nvcc flags, e.g.
 # -lineinfo for Nsight Compute's source view), URBIS_TAG (suffix of the JSON names), JOBS.
 set -uo pipefail
@@ -71,6 +73,25 @@ if [[ $STEPS == *,cpu,* ]]; then
   run "$BUILD"/urbis bench --device cpu --osm "$SF" --repeats 3 --json "$OUT/bench_sf_cpu.json" || status=1
   say "CPU bench: generated city, 100k buildings"
   run "$BUILD"/urbis bench --device cpu --buildings 100000 --repeats 3 --json "$OUT/bench_100k_cpu.json" || status=1
+fi
+
+if [[ $STEPS == *,profile,* ]]; then
+  say "profile: render kernel, generated city at 40 m, 1280x720, 4 spp"
+  CUBINS=$OUT/cubins
+  mkdir -p "$CUBINS"
+  (cd "$CUBINS" && cuobjdump -xelf all "$OLDPWD/$BUILD/urbis" >/dev/null) || status=1
+  SASS=$OUT/render_kernel.sass
+  for f in "$CUBINS"/*.cubin; do nvdisasm -g -c "$f"; done > "$SASS"
+  for geometry in procedural triangles; do
+    ncu --kernel-name regex:renderKernel --launch-count 1 --section SourceCounters --section WarpStateStats \
+        --import-source yes -f -o "$OUT/profile_$geometry" "$BUILD"/urbis render --buildings 3000 --seed 7 \
+        --building-height-range 10:30 --camera -300,40,300,0,20,0 --height-scale 3.3058 --width 1280 --height 720 \
+        --spp 4 --device cuda --geometry $geometry --out "$OUT/profile_$geometry.png" >/dev/null 2>&1 || status=1
+    ncu --import "$OUT/profile_$geometry.ncu-rep" --page source --csv --print-source sass |
+        gzip > "$OUT/profile_$geometry.csv.gz"
+    say "profile ($geometry)"
+    run python3 bench/sass_lines.py renderKernel "$SASS" "$OUT/profile_$geometry.csv.gz" 30 || status=1
+  done
 fi
 
 say "done, status $status"

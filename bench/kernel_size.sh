@@ -1,0 +1,17 @@
+#!/bin/sh
+# Size of the CUDA kernels in instructions (sm_90 machine code, 16 bytes each), without a GPU: the
+# render kernel's size decides how often it waits on instruction fetches (docs/gpu_notes.md).
+#   bench/kernel_size.sh [extra nvcc flags]
+set -eu
+cd "$(dirname "$0")/.."
+NVCC=${NVCC:-$(command -v nvcc || echo /usr/local/cuda/bin/nvcc)}
+CUBIN=$(mktemp --suffix=.cubin)
+trap 'rm -f "$CUBIN"' EXIT
+"$NVCC" -std=c++20 -arch=sm_90 -cubin -O3 -fmad=false -DURBIS_HAVE_CUDA=1 -I src "$@" src/gpu/gpu_backend.cu -o "$CUBIN"
+readelf -SW "$CUBIN" 2>/dev/null | python3 -c '
+import re, sys
+for line in sys.stdin:
+    m = re.search(r"\.text\.(\S+)\s+\S+\s+\S+\s+\S+\s+([0-9a-f]+)", line)
+    if m and int(m.group(2), 16):
+        name = next((k for k in ("renderKernel", "closestKernel", "occludedKernel") if k in m.group(1)), m.group(1))
+        print(f"{name:16s} {int(m.group(2), 16) // 16:6d} instructions")'
