@@ -167,8 +167,8 @@ enum class CellTest : uint8_t { Miss, Hit, Undecided };
 /// the glass if it reaches the glass plane first. A ray from in front that crosses the wall plane
 /// outside the cell misses it (it meets that other cell or margin first). Undecided, for the caller
 /// to test the cell's parts, for a ray that starts elsewhere or within tmin of the wall plane.
-URBIS_HD inline CellTest intersectPunchedFront(const WallRecord& wall, const CellLayout& c, const WallRay& r, float& tmax,
-                                               WallHit& hit) {
+URBIS_HD inline CellTest intersectPunchedFront(const WallRecord& wall, const CellLayout& c, const WallRay& r,
+                                               float& tmax, WallHit& hit) {
     const auto inOpening = [&](float u, float v) { return u >= c.ou0 && u <= c.ou1 && v >= c.ov0 && v <= c.ov1; };
     if (r.o.z > 0.0f) {
         if (!(r.d.z < 0.0f)) return CellTest::Miss;
@@ -234,7 +234,8 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     if (s.empty()) return found;
     const CellSide side = r.o.z + s.t0 * r.d.z > -wall.reveal ? CellSide::Front : CellSide::Back;
     const bool front = side == CellSide::Front;
-    s.clip(r.o.z, r.d.z, r.invD.z, (front ? -wall.reveal : -wall.depthBack) - e, (front ? wall.depthFront : -wall.reveal) + e);
+    s.clip(r.o.z, r.d.z, r.invD.z, (front ? -wall.reveal : -wall.depthBack) - e,
+           (front ? wall.depthFront : -wall.reveal) + e);
     if (s.empty()) return found;
     // The cell of the entry point, and the distances to the next column and row boundaries.
     const float pu = r.o.x + s.t0 * r.d.x, pv = r.o.y + s.t0 * r.d.y;

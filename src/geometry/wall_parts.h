@@ -141,20 +141,17 @@ URBIS_HD inline CellCoords cellCoords(const WallRecord& wall, const CellLayout& 
     return k;
 }
 
-/// A part's material: the wall's own, the cell's room, or one of the facade's (FacadeMaterial).
-enum class PartMaterial : uint8_t { Wall, Room, Facade };
-
 /// A part as 40 bits: six CellCoords (5 bits each: lo u v w, hi u v w), the axis (2 bits: a quad's
 /// normal, or kWallPartBox), the SurfacePart (4 bits) and the material (4 bits: 0 the wall's, 1 the
 /// room's, 2 + n FacadeMaterial n).
 using PartRecipe = uint64_t;
 
-URBIS_HD constexpr PartRecipe partRecipe(CellCoord lu, CellCoord lv, CellCoord lw, CellCoord hu, CellCoord hv, CellCoord hw,
-                                uint8_t axis, SurfacePart part, uint32_t material) {
+URBIS_HD constexpr PartRecipe partRecipe(CellCoord lu, CellCoord lv, CellCoord lw, CellCoord hu, CellCoord hv,
+                                         CellCoord hw, uint8_t axis, SurfacePart part, uint32_t material) {
     return PartRecipe(lu) | PartRecipe(lv) << 5 | PartRecipe(lw) << 10 | PartRecipe(hu) << 15 | PartRecipe(hv) << 20 |
            PartRecipe(hw) << 25 | PartRecipe(axis) << 30 | PartRecipe(part) << 32 | PartRecipe(material) << 36;
 }
-constexpr uint32_t kWallMaterialCode = 0, kRoomMaterialCode = 1;
+inline constexpr uint32_t kWallMaterialCode = 0, kRoomMaterialCode = 1;
 URBIS_HD constexpr uint32_t facadeMaterialCode(FacadeMaterial m) { return 2 + uint32_t(m); }
 
 /// First recipe of a curtain-wall cell in kPartRecipes (the punched cell's come first).
@@ -169,10 +166,14 @@ URBIS_TABLE PartRecipe kPartRecipes[] = {
     partRecipe(OpeningU1, V0, WallPlane, U1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
     partRecipe(OpeningU0, V0, WallPlane, OpeningU1, OpeningV0, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
     partRecipe(OpeningU0, OpeningV1, WallPlane, OpeningU1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
-    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU0, OpeningV1, WallPlane, 0, SurfacePart::Jamb, kWallMaterialCode),
-    partRecipe(OpeningU1, OpeningV0, GlassPlane, OpeningU1, OpeningV1, WallPlane, 0, SurfacePart::Jamb, kWallMaterialCode),
-    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV0, WallPlane, 1, SurfacePart::Jamb, kWallMaterialCode),
-    partRecipe(OpeningU0, OpeningV1, GlassPlane, OpeningU1, OpeningV1, WallPlane, 1, SurfacePart::Jamb, kWallMaterialCode),
+    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU0, OpeningV1, WallPlane, 0, SurfacePart::Jamb,
+               kWallMaterialCode),
+    partRecipe(OpeningU1, OpeningV0, GlassPlane, OpeningU1, OpeningV1, WallPlane, 0, SurfacePart::Jamb,
+               kWallMaterialCode),
+    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV0, WallPlane, 1, SurfacePart::Jamb,
+               kWallMaterialCode),
+    partRecipe(OpeningU0, OpeningV1, GlassPlane, OpeningU1, OpeningV1, WallPlane, 1, SurfacePart::Jamb,
+               kWallMaterialCode),
     partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV1, GlassPlane, 2, SurfacePart::Glass,
                facadeMaterialCode(FacadeMaterial::Glass)),
     partRecipe(U0, V0, GlassPlane, OpeningU0, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode),
@@ -207,7 +208,8 @@ URBIS_TABLE PartRecipe kPartRecipes[] = {
 };
 
 /// The part that `recipe` makes of a cell with coordinates `k`.
-URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout& c, const CellCoords& k, PartRecipe recipe) {
+URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout& c, const CellCoords& k,
+                                       PartRecipe recipe) {
     const auto coord = [&](int shift) { return k.at[(recipe >> shift) & 31u]; };
     const uint32_t material = uint32_t(recipe >> 36) & 15u;
     WallPart p;
@@ -215,9 +217,8 @@ URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout
     p.hi = {coord(15), coord(20), coord(25)};
     p.axis = uint8_t((recipe >> 30) & 3u);
     p.part = SurfacePart((recipe >> 32) & 15u);
-    p.material = material == kWallMaterialCode ? wall.wallMaterial
-                 : material == kRoomMaterialCode ? c.roomMaterial
-                                                 : wall.facadeMaterials + (material - facadeMaterialCode(FacadeMaterial(0)));
+    const uint32_t facade = wall.facadeMaterials + (material - facadeMaterialCode(FacadeMaterial(0)));
+    p.material = material == kWallMaterialCode ? wall.wallMaterial : (material == kRoomMaterialCode ? c.roomMaterial : facade);
     return p;
 }
 
