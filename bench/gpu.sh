@@ -79,7 +79,8 @@ if [[ $STEPS == *,profile,* ]]; then
   say "profile: render kernel, generated city at 40 m, 1280x720, 4 spp"
   CUBINS=$OUT/cubins
   mkdir -p "$CUBINS"
-  (cd "$CUBINS" && cuobjdump -xelf all "$OLDPWD/$BUILD/urbis" >/dev/null) || status=1
+  BIN=$(realpath "$BUILD/urbis")
+  (cd "$CUBINS" && cuobjdump -xelf all "$BIN" >/dev/null) || status=1
   SASS=$OUT/render_kernel.sass
   for f in "$CUBINS"/*.cubin; do nvdisasm -g -c "$f"; done > "$SASS"
   for geometry in procedural triangles; do
