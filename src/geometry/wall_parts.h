@@ -154,8 +154,10 @@ URBIS_HD constexpr PartRecipe partRecipe(CellCoord lu, CellCoord lv, CellCoord l
 inline constexpr uint32_t kWallMaterialCode = 0, kRoomMaterialCode = 1;
 URBIS_HD constexpr uint32_t facadeMaterialCode(FacadeMaterial m) { return 2 + uint32_t(m); }
 
-/// First recipe of a curtain-wall cell in kPartRecipes (the punched cell's come first).
-inline constexpr int kCurtainRecipes = 22;
+/// Where groups of parts start in kPartRecipes (the numbering above): a punched cell's glass, room
+/// and balcony, then a curtain-wall cell's own parts, as many as kCurtainFrontParts.
+inline constexpr int kGlassRecipe = 8, kRoomRecipes = 13, kBalconyRecipes = 18, kCurtainRecipes = 22;
+inline constexpr int kCurtainFrontParts = 6;
 
 /// Every part's recipe: punched cells' parts 0-21, then curtain-wall cells' parts 0-5 (half mullions
 /// reaching from the glass plane out to MullionFront, a spandrel below the panel split and glass
@@ -236,9 +238,10 @@ URBIS_HD inline int cellPartCount(const WallRecord& wall, const CellLayout& c, C
 URBIS_HD inline WallPart cellPart(const WallRecord& wall, const CellLayout& c, const CellCoords& coords, CellSide side,
                                   int k) {
     int recipe;
-    if (wall.style == WallStyle::Curtain) recipe = k < 6 ? kCurtainRecipes + k : k + 7;
-    else if (side == CellSide::Back) recipe = k + 8;
-    else recipe = side == CellSide::Front && k >= 9 ? k + 9 : k;
+    if (wall.style == WallStyle::Curtain)
+        recipe = k < kCurtainFrontParts ? kCurtainRecipes + k : kRoomRecipes + (k - kCurtainFrontParts);
+    else if (side == CellSide::Back) recipe = kGlassRecipe + k;
+    else recipe = side == CellSide::Front && k > kGlassRecipe ? kBalconyRecipes + (k - kGlassRecipe - 1) : k;
     return partFromRecipe(wall, c, coords, kPartRecipes[recipe]);
 }
 
