@@ -2,8 +2,9 @@
 # GPU check and benchmark in one go: builds urbis with CUDA, runs the GPU tests (CTest label gpu),
 # benchmarks the GPU (and the CPU, for comparison) on downtown San Francisco and on a generated
 # 100k-building city, and renders one image per backend. Logs and JSON go to $OUT (default
-# ./gpu-out): gpu.log, bench_*.json, sf_gpu.png. Dependencies: $URBIS_DEPS (default ./.deps) with
-# root/usr (headers and libraries, dpkg -x) and data/ (sf_downtown_2023.osm.pbf, the Bavarian village).
+# ./gpu-out): gpu.log, bench_*.json, sf_gpu.png. Dependencies: $URBIS_DEPS (default ./.deps), as
+# bench/gpu_deps.sh gathers them: debs/ (unpacked into root/ on first use) and data/
+# (sf_downtown_2023.osm.pbf, the Bavarian village).
 # Usage: bench/gpu.sh [steps], steps a comma list of build,test,bench,cpu (default all) and profile
 # (not by default: Nsight Compute on one render kernel launch of each representation, generated city
 # at 40 m, joined with the kernel's line table by bench/sass_lines.py; build with -lineinfo for it).
@@ -16,6 +17,9 @@ DEPS=${URBIS_DEPS:-$PWD/.deps}
 JOBS=${JOBS:-$(nproc)}
 mkdir -p "$OUT"
 LOG=$OUT/gpu.log
+if [[ ! -d $DEPS/root/usr && -d $DEPS/debs ]]; then
+  for f in "$DEPS"/debs/*.deb; do dpkg -x "$f" "$DEPS/root" || exit 1; done
+fi
 export LD_LIBRARY_PATH=$DEPS/root/usr/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}
 export URBIS_OSMNX_DATA=$DEPS/data URBIS_SHARED_DATA=$DEPS/data
 SF=$DEPS/data/sf_downtown_2023.osm.pbf
@@ -91,7 +95,9 @@ if [[ $STEPS == *,profile,* ]]; then
     ncu --import "$OUT/profile_$geometry.ncu-rep" --page source --csv --print-source sass |
         gzip > "$OUT/profile_$geometry.csv.gz"
     say "profile ($geometry)"
-    run python3 bench/sass_lines.py renderKernel "$SASS" "$OUT/profile_$geometry.csv.gz" 30 || status=1
+    # The render kernel of the scene's layout (its mangled name: SceneLayout 1 Mixed, 2 Triangles).
+    layout=$([[ $geometry == procedural ]] && echo 1 || echo 2)
+    run python3 bench/sass_lines.py "renderKernelILNS_11SceneLayoutE$layout" "$SASS" "$OUT/profile_$geometry.csv.gz" 30 || status=1
   done
 fi
 

@@ -14,4 +14,6 @@ for line in sys.stdin:
     m = re.search(r"\.text\.(\S+)\s+\S+\s+\S+\s+\S+\s+([0-9a-f]+)", line)
     if m and int(m.group(2), 16):
         name = next((k for k in ("renderKernel", "closestKernel", "occludedKernel") if k in m.group(1)), m.group(1))
-        print(f"{name:16s} {int(m.group(2), 16) // 16:6d} instructions")'
+        layout = re.search(r"SceneLayoutE(\d)", m.group(1))
+        if layout: name += {"1": "<Mixed>", "2": "<Triangles>"}[layout.group(1)]
+        print(f"{name:24s} {int(m.group(2), 16) // 16:6d} instructions")'

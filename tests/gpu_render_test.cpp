@@ -16,11 +16,18 @@ using namespace urbis;
 // absolute difference under 0.1% of the mean luminance, at most 1% of pixels off by more than
 // 0.1% relative, and no pixel off by more than the largest single-sample change spread over spp
 // (bounded here by 2 x mean luminance x 64 / spp).
-TEST(GpuRender, BavarianVillageMatchesTheCpuAt64Spp) {
-    URBIS_SKIP_WITHOUT_GPU();
+namespace {
+
+/// Renders the Bavarian village in `geometry` ("procedural": walls in the BVH, the GPU's mixed-layout
+/// render kernel; "plain": stored triangles only, its triangle-layout kernel) on both backends and
+/// checks the tolerances above.
+void expectVillageImagesMatch(const std::string& geometry) {
     CityModel city = importOsm(test::villageFile(), ImportOptions{});
-    CityMesh mesh = meshCity(city);
-    Scene scene = Scene::build(mesh.mesh, mesh.materials);
+    CityMeshOptions options;
+    options.geometry = parseGeometryModes(geometry);
+    CityMesh mesh = meshCity(city, options);
+    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls);
+    ASSERT_EQ(scene.view().primRefs != nullptr, geometry == "procedural");
     scene.ground = GroundPlane{0.0f, mesh.groundMaterial, true};
     scene.sun = makeSun(35.0f, 140.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     RenderSettings settings;
@@ -49,14 +56,26 @@ TEST(GpuRender, BavarianVillageMatchesTheCpuAt64Spp) {
                      cpu.pixels[i].z == img.pixels[i].z;
     }
     const double n = double(cpu.pixels.size()), mean = sum / n;
-    std::printf("image parity: mean luminance %.5f, mean |diff| %.3g (%.4f%%), worst %.4g, %zu of %zu pixels off "
-                "by > 0.1%%, %zu bit-identical; rays cpu %llu gpu %llu\n",
-                mean, sumDiff / n, 100.0 * sumDiff / n / mean, worst, off, cpu.pixels.size(), identical,
-                (unsigned long long)cpuCounters.rays, (unsigned long long)gpuCounters.rays);
+    std::printf("image parity (%s): mean luminance %.5f, mean |diff| %.3g (%.4f%%), worst %.4g, %zu of %zu pixels "
+                "off by > 0.1%%, %zu bit-identical; rays cpu %llu gpu %llu\n",
+                geometry.c_str(), mean, sumDiff / n, 100.0 * sumDiff / n / mean, worst, off, cpu.pixels.size(),
+                identical, (unsigned long long)cpuCounters.rays, (unsigned long long)gpuCounters.rays);
     ASSERT_GT(mean, 0.01) << "the image is black";
     EXPECT_LT(sumDiff / n, 1e-3 * mean);
     EXPECT_LE(double(off), 0.01 * n);
     EXPECT_LE(worst, 2.0 * mean * 64.0 / settings.spp);
     // Ray counts differ only by the paths that rounding sends elsewhere.
     EXPECT_NEAR(double(gpuCounters.rays), double(cpuCounters.rays), 1e-3 * double(cpuCounters.rays));
+}
+
+} // namespace
+
+TEST(GpuRender, VillageWithProceduralFacadesMatchesTheCpuAt64Spp) {
+    URBIS_SKIP_WITHOUT_GPU();
+    expectVillageImagesMatch("procedural");
+}
+
+TEST(GpuRender, VillageOfStoredTrianglesMatchesTheCpuAt64Spp) {
+    URBIS_SKIP_WITHOUT_GPU();
+    expectVillageImagesMatch("plain");
 }

@@ -130,18 +130,25 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
                 }
             }
         }
-        // Interior children still in reach, sorted nearest first (insertion into at most 4).
-        Entry next[kBvhWidth];
-        int count = 0;
-        for (int l = 0; l < kBvhWidth; ++l) {
-            if (!(hitMask >> l & 1u) || node.primCount[l] != 0 || tEntry[l] > ray.tmax) continue;
-            int k = count++;
-            for (; k > 0 && next[k - 1].tEntry > tEntry[l]; --k) next[k] = next[k - 1];
-            next[k] = {node.child[l], tEntry[l]};
-        }
-        if (count > 0) {
-            for (int k = count - 1; k > 0; --k) stack[top++] = next[k];
-            current = next[0].node;
+        // Interior children still in reach, visited nearest first: the nearest next, the others
+        // pushed farthest first. Each child's place is its rank among them (ties by lane, as a
+        // stable sort would order them), which needs no sorted copy: on the GPU an insertion sort
+        // unrolled into some 140 instructions of the hottest loop (docs/gpu_notes.md).
+        unsigned inner = 0;
+        for (int l = 0; l < kBvhWidth; ++l)
+            inner |= (hitMask >> l & 1u && node.primCount[l] == 0 && tEntry[l] <= ray.tmax ? 1u : 0u) << l;
+        if (inner != 0) {
+            int count = 0;
+            for (int l = 0; l < kBvhWidth; ++l) count += int(inner >> l & 1u);
+            for (int l = 0; l < kBvhWidth; ++l) {
+                if (!(inner >> l & 1u)) continue;
+                int rank = 0;
+                for (int m = 0; m < kBvhWidth; ++m)
+                    rank += int(inner >> m & 1u && (m < l ? tEntry[m] <= tEntry[l] : tEntry[m] < tEntry[l]));
+                if (rank == 0) current = node.child[l];
+                else stack[top + count - 1 - rank] = {node.child[l], tEntry[l]};
+            }
+            top += count - 1;
             continue;
         }
         // Pop the next subtree that may still hold something closer than ray.tmax.

@@ -69,17 +69,23 @@ URBIS_HD inline SurfaceHit traceMixed(const SceneView& scene, Ray& ray, bool any
     return {SurfaceKind::Wall, hit.t, wallAxisNormal(wall, wallHit.axis), wallHit.material, wall.object, wallHit.part};
 }
 
+/// What a scene's BVH holds, where the caller knows it when compiling: the GPU builds one render
+/// kernel per layout, each holding only the traversal it runs (docs/gpu_notes.md). Any: decided per
+/// call from SceneView::primRefs.
+enum class SceneLayout : uint8_t { Any, Mixed, Triangles };
+
 /// The closest surface along `ray` within (tmin, tmax), or with anyHit (a shadow ray) the first
 /// one found: then only valid() means anything (blocked). One function for both queries, so that
 /// the GPU path tracer inlines the traversal and the wall intersector once: two copies overflowed
-/// the H100's instruction cache (docs/gpu_notes.md).
+/// the H100's instruction cache (docs/gpu_notes.md). `Layout` must match scene.primRefs.
+template <SceneLayout Layout = SceneLayout::Any>
 URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyHit) {
     SurfaceHit out;
     if (anyHit) {
         const float tGround = scene.ground.intersect(ray);
         if (tGround > 0.0f) return groundSurface(scene, tGround);
     }
-    if (scene.primRefs) {
+    if (Layout == SceneLayout::Any ? scene.primRefs != nullptr : Layout == SceneLayout::Mixed) {
         out = traceMixed(scene, ray, anyHit);
     } else {
         Hit hit = traceTriangles(scene.geometry, ray, anyHit);

@@ -17,11 +17,14 @@ namespace {
 constexpr int kTileX = 8, kTileY = 16;   // 128 threads; each warp covers 8 x 4 pixels
 constexpr int kTraceBlock = 128;
 
-// Five blocks per SM hold the kernel to 96 registers. Left free, ptxas took 158 for the inlined wall
-// part tests: three blocks per SM, and frames of stored triangles 25 % slower (docs/gpu_notes.md).
+// Five blocks per SM hold the render kernels to 96 registers. Left free, ptxas took 158 for the inlined
+// wall part tests: three blocks per SM, and frames of stored triangles 25 % slower; 128 registers for the
+// walls' kernel alone changed nothing measurable (docs/gpu_notes.md).
 constexpr int kRenderBlocksPerSm = 5;
 
 /// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU.
+/// One kernel per scene layout, so that each holds only the traversal it runs.
+template <SceneLayout Layout>
 __global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm)
     renderKernel(SceneView scene, Camera camera, RenderSettings settings, Vec3f* film, unsigned long long* rayCount) {
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
@@ -30,7 +33,7 @@ __global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm)
     if (x < settings.width && y < settings.height) {
         Vec3f sum{};
         for (uint32_t s = 0; s < settings.spp; ++s) {
-            PathSample sample = tracePath(scene, camera, settings, x, y, s);
+            PathSample sample = tracePath<Layout>(scene, camera, settings, x, y, s);
             sum += sample.radiance;
             rays += sample.rays;
         }
@@ -120,7 +123,7 @@ GpuInfo probeGpu() {
     info.multiprocessors = prop.multiProcessorCount;
     // The fat binary holds code for URBIS_CUDA_ARCHITECTURES only: ask whether a kernel loads here.
     cudaFuncAttributes attributes{};
-    status = cudaFuncGetAttributes(&attributes, renderKernel);
+    status = cudaFuncGetAttributes(&attributes, renderKernel<SceneLayout::Mixed>);
     if (status != cudaSuccess) {
         info.reason = "CUDA device " + info.name + " (sm_" + std::to_string(prop.major) + std::to_string(prop.minor) +
                       ") cannot run this build's kernels (" + cudaGetErrorString(status) +
@@ -147,7 +150,9 @@ struct GpuScene::Impl {
         film.resize(size_t(settings.width) * settings.height);
         dim3 block(kTileX, kTileY);
         dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
-        renderKernel<<<grid, block>>>(scene.view(), camera, settings, film.data(), rayCount.data());
+        const SceneView view = scene.view();
+        if (view.primRefs) renderKernel<SceneLayout::Mixed><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
+        else renderKernel<SceneLayout::Triangles><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
         checkLaunch("renderKernel");
     }
 

@@ -1,0 +1,20 @@
+#!/bin/sh
+# Gathers here what bench/gpu.sh needs on the GPU machine, which reaches no package registry: the
+# Debian 12 packages of the libraries urbis links that that machine lacks (as .deb files; gpu.sh
+# unpacks them there, so that the carried folder stays small: Boost's headers alone unpack to
+# 150 MB) and the OSM extracts that the GPU tests and benchmarks read.
+#   bench/gpu_deps.sh [deps-dir]      (default .deps, git-ignored; carry it to the GPU machine)
+set -eu
+DEPS=${1:-.deps}
+DATA=${URBIS_DATA:-$(dirname "$0")/../../shared/data}
+VILLAGE=/usr/share/doc/python-osmnx-doc/examples/tests/input_data
+mkdir -p "$DEPS/debs" "$DEPS/data"
+# apt-get download writes into the current folder, as the _apt user where it can.
+(cd "$DEPS/debs" && apt-get download \
+    libosmium2-dev libprotozero-dev libexpat1-dev libexpat1 libbz2-dev zlib1g-dev \
+    libgeos-dev libgeos3.11.1 libgeos-c1v5 libcgal-dev libboost1.74-dev \
+    libgmp-dev libgmp10 libgmpxx4ldbl libmpfr-dev libmpfr6 \
+    libtbb-dev libtbb12 libtbbmalloc2 libtbbbind-2-5)
+cp "$VILLAGE/planet_10.068,48.135_10.071,48.137.osm" "$VILLAGE/West-Oakland.osm.bz2" "$DEPS/data/"
+cp "$DATA/sf_downtown_2023.osm.pbf" "$DEPS/data/"
+du -sh "$DEPS"
