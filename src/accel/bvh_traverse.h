@@ -132,8 +132,8 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
         }
         // Interior children still in reach, visited nearest first: the nearest next, the others
         // pushed farthest first. Each child's place is its rank among them (ties by lane, as a
-        // stable sort would order them), which needs no sorted copy: on the GPU an insertion sort
-        // unrolled into some 140 instructions of the hottest loop (docs/gpu_notes.md).
+        // stable sort would order them), written straight to the stack: no sorted copy in the
+        // GPU's local memory (docs/gpu_notes.md, fifth session).
         unsigned inner = 0;
         for (int l = 0; l < kBvhWidth; ++l)
             inner |= (hitMask >> l & 1u && node.primCount[l] == 0 && tEntry[l] <= ray.tmax ? 1u : 0u) << l;
