@@ -151,8 +151,10 @@ struct GpuScene::Impl {
         dim3 block(kTileX, kTileY);
         dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
         const SceneView view = scene.view();
-        if (view.primRefs) renderKernel<SceneLayout::Mixed><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
-        else renderKernel<SceneLayout::Triangles><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
+        if (view.primRefs)
+            renderKernel<SceneLayout::Mixed><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
+        else
+            renderKernel<SceneLayout::Triangles><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
         checkLaunch("renderKernel");
     }
 
