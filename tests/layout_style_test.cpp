@@ -92,6 +92,7 @@ TEST(LayoutStyle, UsesAndRoofsByDistrict) {
     std::map<BuildingType, size_t> types;
     std::map<RoofShape, size_t> roofs;
     std::set<uint32_t> seeds;
+    std::map<std::string, size_t> roofedShapes;
     for (const Building& b : c.buildings) {
         ++types[b.type];
         ++roofs[b.roofShape];
@@ -99,7 +100,10 @@ TEST(LayoutStyle, UsesAndRoofsByDistrict) {
         if (b.roofShape != RoofShape::Flat) {
             EXPECT_EQ(b.type, BuildingType::House);
             EXPECT_GT(b.roofHeight, 0.0f);
-            EXPECT_GE(b.roofDirection, 0.0f);
+            // Only rectangles take their street's direction: L-shaped houses get a gable per wing.
+            if (shapeOf(b.footprint) == "rectangle") EXPECT_GE(b.roofDirection, 0.0f);
+            else EXPECT_LT(b.roofDirection, 0.0f) << shapeOf(b.footprint);
+            ++roofedShapes[shapeOf(b.footprint)];
         }
     }
     for (BuildingType t : {BuildingType::Office, BuildingType::Commercial, BuildingType::Retail,
@@ -108,6 +112,8 @@ TEST(LayoutStyle, UsesAndRoofsByDistrict) {
     EXPECT_GT(roofs[RoofShape::Flat], c.buildings.size() / 2) << "most roofs are flat";
     EXPECT_GT(roofs[RoofShape::Gabled], 0u);
     EXPECT_GT(roofs[RoofShape::Hipped], 0u);
+    EXPECT_GT(roofedShapes["rectangle"], 0u);
+    EXPECT_GT(roofedShapes["L"], 0u);
     EXPECT_GT(seeds.size(), c.buildings.size() * 99 / 100) << "per-building seeds are hashes";
     // Buildings come from the centre outward: offices cluster in the first tenth, houses in the last.
     const size_t n = c.buildings.size(), tenth = n / 10;

@@ -103,7 +103,9 @@ void styleBuilding(Building& b, const Lot& lot, FootprintShape shape, double nor
         if (u < 0.8f) {
             b.roofShape = u < 0.45f ? RoofShape::Gabled : RoofShape::Hipped;
             b.roofHeight = std::min(0.5f * b.height, std::clamp(0.3f * b.height, 2.0f, 5.0f));
-            b.roofDirection = facingDegrees(lot);
+            // A rectangle's ridge follows its street; an L-shaped house, without a direction, gets a
+            // ridge and a gable per wing (or a hipped roof) from its straight skeleton.
+            if (shape == FootprintShape::Rectangle) b.roofDirection = facingDegrees(lot);
         }
     }
     b.levels = std::max(1, static_cast<int>(std::lround((b.height - b.roofHeight) / kStoreyHeight)));
