@@ -1,6 +1,7 @@
 // Running the real urbis command from tests, and a scratch folder per test.
 #pragma once
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -29,9 +30,16 @@ inline std::filesystem::path scratchDir(const std::string& name) {
     return dir;
 }
 
-/// Runs `URBIS_BIN args` in `dir`, capturing stdout and stderr.
+/// The urbis command under test: $URBIS_BIN where set (binaries carried to another machine, as
+/// bench/gpu.sh runs them), else the one built beside the tests.
+inline std::string urbisBinary() {
+    const char* bin = std::getenv("URBIS_BIN");
+    return bin && *bin ? bin : URBIS_BIN;
+}
+
+/// Runs `urbisBinary() args` in `dir`, capturing stdout and stderr.
 inline CommandResult runUrbis(const std::string& args, const std::filesystem::path& dir) {
-    std::string command = "cd '" + dir.string() + "' && '" URBIS_BIN "' " + args + " >stdout.txt 2>stderr.txt";
+    std::string command = "cd '" + dir.string() + "' && '" + urbisBinary() + "' " + args + " >stdout.txt 2>stderr.txt";
     int status = std::system(command.c_str());
     CommandResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
