@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# GPU check and benchmark in one go: builds urbis with CUDA, runs the GPU tests (CTest label gpu),
+# GPU check and benchmark in one go: builds urbis with CUDA, runs the GPU tests (urbis_gpu_tests),
 # benchmarks the GPU (and the CPU, for comparison) on downtown San Francisco and on a generated
 # 100k-building city, and renders one image per backend. Logs and JSON go to $OUT (default
 # ./gpu-out): gpu.log, bench_*.json, sf_gpu.png. Dependencies: $URBIS_DEPS (default ./.deps), as

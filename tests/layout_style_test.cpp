@@ -101,9 +101,10 @@ TEST(LayoutStyle, UsesAndRoofsByDistrict) {
             EXPECT_EQ(b.type, BuildingType::House);
             EXPECT_GT(b.roofHeight, 0.0f);
             // Only rectangles take their street's direction: L-shaped houses get a gable per wing.
-            if (shapeOf(b.footprint) == "rectangle") EXPECT_GE(b.roofDirection, 0.0f);
-            else EXPECT_LT(b.roofDirection, 0.0f) << shapeOf(b.footprint);
-            ++roofedShapes[shapeOf(b.footprint)];
+            const std::string shape = shapeOf(b.footprint);
+            if (shape == "rectangle") EXPECT_GE(b.roofDirection, 0.0f);
+            else EXPECT_LT(b.roofDirection, 0.0f) << shape;
+            ++roofedShapes[shape];
         }
     }
     for (BuildingType t : {BuildingType::Office, BuildingType::Commercial, BuildingType::Retail,
