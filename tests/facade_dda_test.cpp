@@ -41,19 +41,23 @@ bool intersectWallParts(const CellParts& parts, const WallRay& r, float& tmax, W
     return found;
 }
 
-/// Closest hit over the margins and every cell (both sides of the glass).
-bool bruteForce(const WallRecord& wall, const Ray& ray, WallHit& hit) {
+/// Closest hit over the margins and every part of every cell. By default the parts are the
+/// intersector's (both sides of the glass: the room as a box, the frame and the glass plane as quads
+/// with the opening); with `twinParts` they are the triangle twin's quads and boxes.
+bool bruteForce(const WallRecord& wall, const Ray& ray, WallHit& hit, bool twinParts = false) {
     const WallRay r(wall, ray);
     float tmax = ray.tmax;
     CellParts margins;
     marginParts(wall, margins);
     bool found = intersectWallParts(margins, r, tmax, hit);
     for (uint32_t j = 0; j < wall.floors; ++j)
-        for (uint32_t i = 0; i < wall.slots; ++i) {
-            CellParts cell;
-            cellParts(wall, j, i, CellSide::Both, cell);
-            found |= intersectWallParts(cell, r, tmax, hit);
-        }
+        for (uint32_t i = 0; i < wall.slots; ++i)
+            for (CellSide side : {CellSide::Front, CellSide::Back, CellSide::Both}) {
+                if ((side == CellSide::Both) != twinParts) continue;
+                CellParts cell;
+                cellParts(wall, j, i, side, cell);
+                found |= intersectWallParts(cell, r, tmax, hit);
+            }
     return found;
 }
 
@@ -129,22 +133,46 @@ bool reachedThroughSolid(const WallRecord& wall, const Ray& ray, float t) {
     return insideSolid(wall, r.o + r.d * fmaxf(0.0f, t - 1e-3f));
 }
 
-/// Rays whose answers differ: hit vs miss, distances apart by more than a millimetre, or another
+/// Whether two answers differ: hit vs miss, distances apart by more than a millimetre, or another
 /// material or part.
+bool differ(bool a, const WallHit& x, bool b, const WallHit& y) {
+    return a != b || (a && (fabsf(x.t - y.t) > 1e-3f || x.material != y.material || x.part != y.part));
+}
+
+/// Random rays of `kind` that do not start inside the wall's solid body.
+Ray randomOpenRay(const WallRecord& wall, RayKind kind, std::mt19937& rng) {
+    Ray ray = randomRay(wall, kind, rng);
+    while (insideSolid(wall, WallRay(wall, ray).o)) ray = randomRay(wall, kind, rng);
+    return ray;
+}
+
+/// Rays on which the intersector and the brute force differ (the closest and the any-hit query).
 size_t disagreements(const WallRecord& wall, RayKind kind, size_t rays, size_t& hits) {
     std::mt19937 rng(uint32_t(kind) * 7919u + uint32_t(wall.style));
     size_t bad = 0;
     for (size_t k = 0; k < rays; ++k) {
-        Ray ray = randomRay(wall, kind, rng);
-        while (insideSolid(wall, WallRay(wall, ray).o)) ray = randomRay(wall, kind, rng);
+        const Ray ray = randomOpenRay(wall, kind, rng);
         WallHit fast, slow;
         const bool a = intersectWall<false>(wall, ray, fast), b = bruteForce(wall, ray, slow);
         WallHit any;
         const bool c = intersectWall<true>(wall, ray, any);
         hits += b;
         if ((a && reachedThroughSolid(wall, ray, fast.t)) || (b && reachedThroughSolid(wall, ray, slow.t))) continue;
-        const bool sameSurface = fast.material == slow.material && fast.part == slow.part;
-        if (a != b || c != b || (a && (fabsf(fast.t - slow.t) > 1e-3f || !sameSurface))) ++bad;
+        if (differ(a, fast, b, slow) || c != b) ++bad;
+    }
+    return bad;
+}
+
+/// Rays on which the intersector's parts and the twin's quads (both by brute force) differ.
+size_t twinPartDisagreements(const WallRecord& wall, RayKind kind, size_t rays) {
+    std::mt19937 rng(uint32_t(kind) * 104729u + uint32_t(wall.style));
+    size_t bad = 0;
+    for (size_t k = 0; k < rays; ++k) {
+        const Ray ray = randomOpenRay(wall, kind, rng);
+        WallHit own, twin;
+        const bool a = bruteForce(wall, ray, own), b = bruteForce(wall, ray, twin, true);
+        if ((a && reachedThroughSolid(wall, ray, own.t)) || (b && reachedThroughSolid(wall, ray, twin.t))) continue;
+        bad += differ(a, own, b, twin);
     }
     return bad;
 }
@@ -165,6 +193,24 @@ TEST_P(FacadeDda, MatchesBruteForceOverEveryCell) {
     EXPECT_LE(bad, kRaysPerKind / 10000) << "of " << kRaysPerKind << " rays, " << hits << " hits";
     EXPECT_GT(hits, kRaysPerKind / 20) << "the rays must actually meet the wall";
 }
+
+class FacadeParts : public ::testing::TestWithParam<std::tuple<WallStyle, RayKind>> {};
+
+TEST_P(FacadeParts, IntersectorsPartsMatchTheTwinsQuads) {
+    const auto [style, kind] = GetParam();
+    const size_t rays = kRaysPerKind / 4, bad = twinPartDisagreements(testWall(style), kind, rays);
+    // The twin's padded quads reach kWallPartPadding beyond a room's edges, where the box does not:
+    // rays grazing in from behind the rooms meet a side quad's padding before the back face (0.2 %
+    // of them, measured); the box meets them at the back face, as the unpadded surfaces do.
+    // Elsewhere both agree but for rays within that padding of a shared edge (0.01 %).
+    EXPECT_LE(bad, kind == RayKind::Grazing ? rays * 3 / 1000 : rays / 10000) << "of " << rays << " rays";
+}
+
+INSTANTIATE_TEST_SUITE_P(AllRayKinds, FacadeParts,
+                         ::testing::Combine(::testing::Values(WallStyle::Punched, WallStyle::Curtain),
+                                            ::testing::Values(RayKind::Anywhere, RayKind::NearlyParallel,
+                                                              RayKind::Grazing, RayKind::InsideRoom,
+                                                              RayKind::OnBalcony)));
 
 INSTANTIATE_TEST_SUITE_P(AllRayKinds, FacadeDda,
                          ::testing::Combine(::testing::Values(WallStyle::Punched, WallStyle::Curtain),

@@ -94,8 +94,21 @@ URBIS_HD inline bool intersectWallPart(const WallPart& p, const WallRay& r, floa
         if (!(t > r.tmin && t < tmax)) return false;
         const float x = r.o[b] + t * r.d[b], y = r.o[c] + t * r.d[c];
         if (x < p.lo[b] - e || x > p.hi[b] + e || y < p.lo[c] - e || y > p.hi[c] + e) return false;
+        SurfacePart part = p.part;
+        uint32_t material = p.material;
+        if (p.opening != PartOpening::None) {
+            // As the twin's padded quads: its glass wins where it overlaps the quads around it (it is
+            // tested first), and its frame overlaps the jambs. So the glass reaches e beyond the
+            // opening, and a hole stops e short of it.
+            const float g = p.opening == PartOpening::Glass ? e : -e;
+            if (x >= p.openingLo.x - g && x <= p.openingHi.x + g && y >= p.openingLo.y - g && y <= p.openingHi.y + g) {
+                if (p.opening == PartOpening::Hole) return false;
+                part = SurfacePart::Glass;
+                material = p.openingMaterial;
+            }
+        }
         tmax = t;
-        hit = {t, uint32_t(a), p.material, p.part};
+        hit = {t, uint32_t(a), material, part};
         return true;
     }
     float tNear = -3.0e38f, tFar = 3.0e38f;
@@ -157,49 +170,6 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect
     return intersectWallPart(inner, r, tmax, hit) || found;
 }
 
-/// What a closed-form test of one cell decided.
-enum class CellTest : uint8_t { Miss, Hit, Undecided };
-
-/// The front side of a punched cell without a balcony, in closed form. There the cell is a solid
-/// wall (w <= 0) with the opening cut into it back to the glass: a ray from in front hits the frame
-/// where it crosses the wall plane outside the opening, and a ray inside the opening (from in front,
-/// or starting there: off the glass or a jamb) hits a jamb where it leaves the opening sideways, else
-/// the glass if it reaches the glass plane first. A ray from in front that crosses the wall plane
-/// outside the cell misses it (it meets that other cell or margin first). Undecided, for the caller
-/// to test the cell's parts, for a ray that starts elsewhere or within tmin of the wall plane.
-URBIS_HD inline CellTest intersectPunchedFront(const WallRecord& wall, const CellLayout& c, const WallRay& r,
-                                               float& tmax, WallHit& hit) {
-    const auto inOpening = [&](float u, float v) { return u >= c.ou0 && u <= c.ou1 && v >= c.ov0 && v <= c.ov1; };
-    if (r.o.z > 0.0f) {
-        if (!(r.d.z < 0.0f)) return CellTest::Miss;
-        const float t = -r.o.z * r.invD.z;
-        if (!(t > r.tmin)) return CellTest::Undecided;
-        if (!(t < tmax)) return CellTest::Miss;
-        const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
-        if (u < c.u0 || u > c.u1 || v < c.v0 || v > c.v1) return CellTest::Miss;
-        if (!inOpening(u, v)) {
-            tmax = t;
-            hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
-            return CellTest::Hit;
-        }
-    } else if (!(r.o.z >= -wall.reveal && inOpening(r.o.x, r.o.y))) {
-        return CellTest::Undecided;
-    }
-    // Inside the opening: where the ray leaves it sideways (a jamb), through the glass plane, or back
-    // out through the wall plane (nothing then: no balcony).
-    const float tu = r.d.x == 0.0f ? 3.0e38f : ((r.d.x > 0.0f ? c.ou1 : c.ou0) - r.o.x) * r.invD.x;
-    const float tv = r.d.y == 0.0f ? 3.0e38f : ((r.d.y > 0.0f ? c.ov1 : c.ov0) - r.o.y) * r.invD.y;
-    const float tSide = fminf(tu, tv);
-    const float tPlane = r.d.z == 0.0f ? 3.0e38f : ((r.d.z < 0.0f ? -wall.reveal : 0.0f) - r.o.z) * r.invD.z;
-    const bool glass = r.d.z < 0.0f && tPlane <= tSide;
-    const float t = glass ? tPlane : tSide;
-    if (!(t > r.tmin && t < tmax) || (!glass && !(tSide < tPlane))) return CellTest::Miss;
-    tmax = t;
-    if (glass) hit = {t, 2u, wall.facadeMaterials + uint32_t(FacadeMaterial::Glass), SurfacePart::Glass};
-    else hit = {t, tu < tv ? 0u : 1u, wall.wallMaterial, SurfacePart::Jamb};
-    return CellTest::Hit;
-}
-
 /// The closest (AnyHit = false) or any (AnyHit = true) hit of `ray` on `wall` (on its tile: see
 /// WallRecord::slot0) with ray.tmin < t < ray.tmax. A ray that enters the tile's column in front of
 /// the glass plane (w > -reveal) can reach only the parts in front of it, one that enters behind it
@@ -253,20 +223,16 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     };
     float tu = nextU(i), tv = nextV(j);
     for (;;) {
+        // One part loop for every cell: the frame is one part, so a punched front is six (a closed
+        // form of it let a warp's lanes take two paths and cost the GPU more: docs/gpu_notes.md).
         const CellLayout c = cellLayout(wall, uint32_t(j), uint32_t(i));
-        CellTest test = CellTest::Undecided;
-        if (side == CellSide::Front && wall.style == WallStyle::Punched && !c.balcony)
-            test = intersectPunchedFront(wall, c, r, tmax, hit);
-        if (test == CellTest::Undecided) {
-            const CellCoords coords = cellCoords(wall, c);
-            const int parts = cellPartCount(wall, c, side);
-            bool cellHit = false;
-            URBIS_NO_UNROLL
-            for (int k = 0; k < parts && !(cellHit && anyHit); ++k)
-                cellHit |= intersectWallPart(cellPart(wall, c, coords, side, k), r, tmax, hit);
-            test = cellHit ? CellTest::Hit : CellTest::Miss;
-        }
-        if (test == CellTest::Hit) return true;
+        const CellCoords coords = cellCoords(wall, c);
+        const int parts = cellPartCount(wall, c, side);
+        bool cellHit = false;
+        URBIS_NO_UNROLL
+        for (int k = 0; k < parts && !(cellHit && anyHit); ++k)
+            cellHit |= intersectWallPart(cellPart(wall, c, coords, side, k), r, tmax, hit);
+        if (cellHit) return true;
         if (tu < tv) {
             if (tu > s.t1 || tu > tmax) break;
             i += stepI;

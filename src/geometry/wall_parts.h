@@ -9,12 +9,23 @@
 
 namespace urbis {
 
-/// An axis-aligned quad or box in wall coordinates (metres). A quad has lo[axis] == hi[axis].
+/// What a quad in the wall or glass plane (axis 2) holds where the cell's opening is.
+enum class PartOpening : uint8_t {
+    None,    ///< nothing: the quad is whole
+    Hole,    ///< a hole: the frame around a window in the wall plane
+    Glass    ///< the window's glass: the glass plane with the room's front wall around it
+};
+
+/// An axis-aligned quad or box in wall coordinates (metres). A quad has lo[axis] == hi[axis]; one in
+/// the wall's plane may have an opening (u openingLo.x..openingHi.x, v openingLo.y..openingHi.y).
 struct WallPart {
     Vec3f lo, hi;
     uint8_t axis = 0;        ///< a quad's normal axis (0: u, 1: v, 2: w), or kWallPartBox
     SurfacePart part = SurfacePart::Facade;
     uint32_t material = 0;
+    PartOpening opening = PartOpening::None;
+    Vec2f openingLo{}, openingHi{};
+    uint32_t openingMaterial = 0;   ///< the glass's, with PartOpening::Glass
 };
 
 /// WallPart::axis of a box.
@@ -101,10 +112,13 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
 // Each part is a recipe: which of the cell's coordinates (CellCoords) its corners take, its axis,
 // SurfacePart and material. One short piece of code builds every part from its recipe; a function
 // per part kind made the wall code too large for the GPU's instruction cache (docs/gpu_notes.md).
-// Punched cells number their parts: 0-3 the frame around the opening in the wall plane, 4-7 its
-// jambs, 8 the glass, 9-12 the room's front wall (the frame in the glass plane), 13-17 the room
-// (back, sides, floor, ceiling), 18-21 the balcony (slab, front and side railings). Curtain-wall
-// cells: 0-3 the half mullions on the cell's edges, 4 the spandrel, 5 the glass, 6-10 the room.
+// Recipes 0-21 make a punched cell as the triangle twin stores it: 0-3 the frame around the opening
+// in the wall plane, 4-7 its jambs, 8 the glass, 9-12 the room's front wall (the frame in the glass
+// plane), 13-17 the room (back, sides, floor, ceiling), 18-21 the balcony (slab, front and side
+// railings); 22-27 a curtain-wall cell's own parts (its room is the punched cell's). The
+// intersector tests fewer, larger parts of the same surfaces (kPartLists): the frame as one quad with
+// the opening as its hole (28), the glass plane as one quad with the glass in its opening (29), the
+// room as one box seen from inside (30).
 
 /// The coordinates (wall space, metres) that a cell's parts are made of: u, then v, then w values.
 enum CellCoord : uint8_t {
@@ -141,28 +155,25 @@ URBIS_HD inline CellCoords cellCoords(const WallRecord& wall, const CellLayout& 
     return k;
 }
 
-/// A part as 40 bits: six CellCoords (5 bits each: lo u v w, hi u v w), the axis (2 bits: a quad's
-/// normal, or kWallPartBox), the SurfacePart (4 bits) and the material (4 bits: 0 the wall's, 1 the
-/// room's, 2 + n FacadeMaterial n).
+/// A part as 42 bits: six CellCoords (5 bits each: lo u v w, hi u v w), the axis (2 bits: a quad's
+/// normal, or kWallPartBox), the SurfacePart (4 bits), the material (4 bits: 0 the wall's, 1 the
+/// room's, 2 + n FacadeMaterial n) and the PartOpening (2 bits) of a quad with the cell's opening.
 using PartRecipe = uint64_t;
 
 URBIS_HD constexpr PartRecipe partRecipe(CellCoord lu, CellCoord lv, CellCoord lw, CellCoord hu, CellCoord hv,
-                                         CellCoord hw, uint8_t axis, SurfacePart part, uint32_t material) {
+                                         CellCoord hw, uint8_t axis, SurfacePart part, uint32_t material,
+                                         PartOpening opening = PartOpening::None) {
     return PartRecipe(lu) | PartRecipe(lv) << 5 | PartRecipe(lw) << 10 | PartRecipe(hu) << 15 | PartRecipe(hv) << 20 |
-           PartRecipe(hw) << 25 | PartRecipe(axis) << 30 | PartRecipe(part) << 32 | PartRecipe(material) << 36;
+           PartRecipe(hw) << 25 | PartRecipe(axis) << 30 | PartRecipe(part) << 32 | PartRecipe(material) << 36 |
+           PartRecipe(opening) << 40;
 }
 inline constexpr uint32_t kWallMaterialCode = 0, kRoomMaterialCode = 1;
 URBIS_HD constexpr uint32_t facadeMaterialCode(FacadeMaterial m) { return 2 + uint32_t(m); }
 
-/// Where groups of parts start in kPartRecipes (the numbering above): a punched cell's glass, room
-/// and balcony, then a curtain-wall cell's own parts, as many as kCurtainFrontParts.
-inline constexpr int kGlassRecipe = 8, kRoomRecipes = 13, kBalconyRecipes = 18, kCurtainRecipes = 22;
-inline constexpr int kCurtainFrontParts = 6;
-
-/// Every part's recipe: punched cells' parts 0-21, then curtain-wall cells' parts 0-5 (half mullions
-/// reaching from the glass plane out to MullionFront, a spandrel below the panel split and glass
-/// above it); a curtain-wall cell's room is the punched cell's. A table, not a switch, so that lanes
-/// of a GPU warp at different parts load their recipes together instead of taking turns.
+/// Every part's recipe, numbered as above; a curtain-wall cell's parts are half mullions reaching from
+/// the glass plane out to MullionFront, a spandrel below the panel split and glass above it. A
+/// table, not a switch, so that lanes of a GPU warp at different parts load their recipes together
+/// instead of taking turns.
 URBIS_TABLE PartRecipe kPartRecipes[] = {
     partRecipe(U0, V0, WallPlane, OpeningU0, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
     partRecipe(OpeningU1, V0, WallPlane, U1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
@@ -207,6 +218,22 @@ URBIS_TABLE PartRecipe kPartRecipes[] = {
                facadeMaterialCode(FacadeMaterial::Spandrel)),
     partRecipe(MullionU0, PanelSplit, GlassPlane, MullionU1, MullionV1, GlassPlane, 2, SurfacePart::Glass,
                facadeMaterialCode(FacadeMaterial::Glass)),
+    partRecipe(U0, V0, WallPlane, U1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode, PartOpening::Hole),
+    partRecipe(U0, V0, GlassPlane, U1, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode, PartOpening::Glass),
+    partRecipe(RoomU0, RoomV0, RoomBack, RoomU1, RoomV1, GlassPlane, kWallPartBox, SurfacePart::Room,
+               kRoomMaterialCode),
+};
+
+/// The recipes of each list of parts that cellPart walks, by wall style and CellSide: a punched
+/// cell's front (the frame with its hole, jambs, glass; then a balcony's four boxes), its back (the
+/// glass plane, the room) and both sides as the twin stores them; a curtain-wall cell's front (its
+/// first six) and back (the same and the room), and both sides as the twin stores them.
+URBIS_TABLE uint8_t kPartLists[] = {
+    28, 4, 5, 6, 7, 8, 18, 19, 20, 21,                                               // punched, front
+    29, 30,                                                                           // punched, back
+    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21,   // punched, both
+    22, 23, 24, 25, 26, 27, 30,                                                       // curtain, front or back
+    22, 23, 24, 25, 26, 27, 13, 14, 15, 16, 17,                                       // curtain, both
 };
 
 /// The part that `recipe` makes of a cell with coordinates `k`.
@@ -219,6 +246,12 @@ URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout
     p.hi = {coord(15), coord(20), coord(25)};
     p.axis = uint8_t((recipe >> 30) & 3u);
     p.part = SurfacePart((recipe >> 32) & 15u);
+    p.opening = PartOpening((recipe >> 40) & 3u);
+    if (p.opening != PartOpening::None) {
+        p.openingLo = {k.at[OpeningU0], k.at[OpeningV0]};
+        p.openingHi = {k.at[OpeningU1], k.at[OpeningV1]};
+        p.openingMaterial = wall.facadeMaterials + uint32_t(FacadeMaterial::Glass);
+    }
     const uint32_t facade = wall.facadeMaterials + (material - facadeMaterialCode(FacadeMaterial(0)));
     p.material = material == kWallMaterialCode ? wall.wallMaterial : (material == kRoomMaterialCode ? c.roomMaterial : facade);
     return p;
@@ -226,23 +259,20 @@ URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout
 
 /// How many parts of the cell lie on `side` of its glass plane (all lie within the cell's column
 /// [u0, u1] x [v0, v1], any w, which lets the grid traversal stop at the first cell hit): the glass
-/// itself on both sides, in front of it the frame, jambs, balcony and mullions, behind it the room.
+/// plane on both sides, in front of it the frame, jambs, balcony and mullions, behind it the room.
 URBIS_HD inline int cellPartCount(const WallRecord& wall, const CellLayout& c, CellSide side) {
-    if (wall.style == WallStyle::Curtain) return side == CellSide::Front ? 6 : 11;
+    if (wall.style == WallStyle::Curtain) return side == CellSide::Front ? 6 : (side == CellSide::Back ? 7 : 11);
     const int balcony = c.balcony && side != CellSide::Back ? 4 : 0;
-    return (side == CellSide::Front ? 9 : (side == CellSide::Back ? 10 : 18)) + balcony;
+    return (side == CellSide::Front ? 6 : (side == CellSide::Back ? 2 : 18)) + balcony;
 }
 
-/// Part k < cellPartCount of the cell on `side` (coordinates k from cellCoords): the numbering above
-/// without the other side's parts.
+/// Part k < cellPartCount of the cell on `side` (coordinates k from cellCoords), from kPartLists.
 URBIS_HD inline WallPart cellPart(const WallRecord& wall, const CellLayout& c, const CellCoords& coords, CellSide side,
                                   int k) {
-    int recipe;
-    if (wall.style == WallStyle::Curtain)
-        recipe = k < kCurtainFrontParts ? kCurtainRecipes + k : kRoomRecipes + (k - kCurtainFrontParts);
-    else if (side == CellSide::Back) recipe = kGlassRecipe + k;
-    else recipe = side == CellSide::Front && k > kGlassRecipe ? kBalconyRecipes + (k - kGlassRecipe - 1) : k;
-    return partFromRecipe(wall, c, coords, kPartRecipes[recipe]);
+    int list;
+    if (wall.style == WallStyle::Curtain) list = side == CellSide::Both ? 41 : 34;
+    else list = side == CellSide::Front ? 0 : (side == CellSide::Back ? 10 : 12);
+    return partFromRecipe(wall, c, coords, kPartRecipes[kPartLists[list + k]]);
 }
 
 /// Every part of cell (floor, slot) of `wall` on `side`, drawing its layout from its hash.
