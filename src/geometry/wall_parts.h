@@ -16,8 +16,9 @@ enum class PartOpening : uint8_t {
     Glass    ///< the window's glass: the glass plane with the room's front wall around it
 };
 
-/// An axis-aligned quad or box in wall coordinates (metres). A quad has lo[axis] == hi[axis]; one in
-/// the wall's plane may have an opening (u openingLo.x..openingHi.x, v openingLo.y..openingHi.y).
+/// An axis-aligned quad or box in wall coordinates (metres). A quad has lo[axis] == hi[axis]; one
+/// facing w (the wall or the glass plane) may have the cell's opening (u openingLo.x..openingHi.x, v
+/// openingLo.y..openingHi.y).
 struct WallPart {
     Vec3f lo, hi;
     uint8_t axis = 0;        ///< a quad's normal axis (0: u, 1: v, 2: w), or kWallPartBox
