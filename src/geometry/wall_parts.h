@@ -237,6 +237,17 @@ URBIS_TABLE uint8_t kPartLists[] = {
     22, 23, 24, 25, 26, 27, 13, 14, 15, 16, 17,                                       // curtain, both
 };
 
+/// The lengths of kPartLists' lists (a balcony adds kBalconyParts to a punched cell's front and
+/// both sides) and where each starts.
+inline constexpr int kPunchedFrontParts = 6, kPunchedBackParts = 2, kPunchedBothParts = 18, kBalconyParts = 4;
+inline constexpr int kCurtainFrontParts = 6, kCurtainBackParts = 7, kCurtainBothParts = 11;
+inline constexpr int kPunchedFrontList = 0, kPunchedBackList = kPunchedFrontList + kPunchedFrontParts + kBalconyParts;
+inline constexpr int kPunchedBothList = kPunchedBackList + kPunchedBackParts;
+inline constexpr int kCurtainList = kPunchedBothList + kPunchedBothParts + kBalconyParts;
+inline constexpr int kCurtainBothList = kCurtainList + kCurtainBackParts;
+static_assert(sizeof(kPartLists) == kCurtainBothList + kCurtainBothParts, "kPartLists' lists and their lengths");
+static_assert(kMaxCellParts == kPunchedBothParts + kBalconyParts, "the longest list is a punched cell's, both sides");
+
 /// The part that `recipe` makes of a cell with coordinates `k`.
 URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout& c, const CellCoords& k,
                                        PartRecipe recipe) {
@@ -262,17 +273,20 @@ URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout
 /// [u0, u1] x [v0, v1], any w, which lets the grid traversal stop at the first cell hit): the glass
 /// plane on both sides, in front of it the frame, jambs, balcony and mullions, behind it the room.
 URBIS_HD inline int cellPartCount(const WallRecord& wall, const CellLayout& c, CellSide side) {
-    if (wall.style == WallStyle::Curtain) return side == CellSide::Front ? 6 : (side == CellSide::Back ? 7 : 11);
-    const int balcony = c.balcony && side != CellSide::Back ? 4 : 0;
-    return (side == CellSide::Front ? 6 : (side == CellSide::Back ? 2 : 18)) + balcony;
+    const bool front = side == CellSide::Front, back = side == CellSide::Back;
+    if (wall.style == WallStyle::Curtain)
+        return front ? kCurtainFrontParts : (back ? kCurtainBackParts : kCurtainBothParts);
+    const int balcony = c.balcony && !back ? kBalconyParts : 0;
+    return (front ? kPunchedFrontParts : (back ? kPunchedBackParts : kPunchedBothParts)) + balcony;
 }
 
 /// Part k < cellPartCount of the cell on `side` (coordinates k from cellCoords), from kPartLists.
 URBIS_HD inline WallPart cellPart(const WallRecord& wall, const CellLayout& c, const CellCoords& coords, CellSide side,
                                   int k) {
     int list;
-    if (wall.style == WallStyle::Curtain) list = side == CellSide::Both ? 41 : 34;
-    else list = side == CellSide::Front ? 0 : (side == CellSide::Back ? 10 : 12);
+    if (wall.style == WallStyle::Curtain) list = side == CellSide::Both ? kCurtainBothList : kCurtainList;
+    else if (side == CellSide::Front) list = kPunchedFrontList;
+    else list = side == CellSide::Back ? kPunchedBackList : kPunchedBothList;
     return partFromRecipe(wall, c, coords, kPartRecipes[kPartLists[list + k]]);
 }
 
