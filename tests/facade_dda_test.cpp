@@ -67,12 +67,12 @@ Vec3f randomDirection(std::mt19937& rng) {
 }
 
 /// Whether wall point (u, v, w) lies inside the wall's solid body (behind the wall plane, but neither
-/// in a room nor in a window's recess): no ray of a path can start there.
+/// in a room nor in a window's recess) or in a curtain wall's mullions: no ray of a path can start there.
 bool insideSolid(const WallRecord& w, Vec3f p) {
-    if (p.x < 0 || p.x > w.width || p.y < 0 || p.y > w.height || p.z <= -w.depthBack || p.z >= 0) return false;
-    if (w.style == WallStyle::Curtain && p.z > -w.reveal) return false;
+    const float front = w.style == WallStyle::Curtain ? kMullionDepth : 0.0f;
+    if (p.x < 0 || p.x > w.width || p.y < 0 || p.y > w.height || p.z <= -w.depthBack || p.z >= front) return false;
     const float fu = (p.x - w.gridU) / w.slotWidth, fv = (p.y - w.gridV) / w.floorHeight;
-    if (fu < 0 || fv < 0 || fu >= w.slots || fv >= w.floors) return true;
+    if (fu < 0 || fv < 0 || fu >= w.slots || fv >= w.floors) return p.z < 0;
     const CellLayout c = cellLayout(w, uint32_t(fv), uint32_t(fu));
     const float inset = 0.05f;
     if (p.z < -w.reveal) return !(p.x > c.u0 + inset && p.x < c.u1 - inset && p.y > c.v0 + inset && p.y < c.v1 - inset);
@@ -199,11 +199,14 @@ class FacadeParts : public ::testing::TestWithParam<std::tuple<WallStyle, RayKin
 TEST_P(FacadeParts, IntersectorsPartsMatchTheTwinsQuads) {
     const auto [style, kind] = GetParam();
     const size_t rays = kRaysPerKind / 4, bad = twinPartDisagreements(testWall(style), kind, rays);
-    // The twin's padded quads reach kWallPartPadding beyond a room's edges, where the box does not:
-    // rays grazing in from behind the rooms meet a side quad's padding before the back face (0.2 %
-    // of them, measured); the box meets them at the back face, as the unpadded surfaces do.
-    // Elsewhere both agree but for rays within that padding of a shared edge (0.01 %).
-    EXPECT_LE(bad, kind == RayKind::Grazing ? rays * 3 / 1000 : rays / 10000) << "of " << rays << " rays";
+    // The twin's padded quads reach kWallPartPadding beyond a room's edges and a window's recess,
+    // where the intersector's boxes do not: rays grazing in from behind the rooms meet a side quad's
+    // padding before the back face (0.2 % of them, measured), and rays nearly parallel to the wall
+    // that skim the wall or glass plane within that padding meet a jamb's (0.012 %, measured); the
+    // boxes meet them where the unpadded surfaces do. Elsewhere both agree but for rays within the
+    // padding of a shared edge (0.01 %).
+    const size_t allowed = kind == RayKind::Grazing ? rays * 3 / 1000 : (kind == RayKind::NearlyParallel ? rays * 2 / 10000 : rays / 10000);
+    EXPECT_LE(bad, allowed) << "of " << rays << " rays";
 }
 
 INSTANTIATE_TEST_SUITE_P(AllRayKinds, FacadeParts,

@@ -83,47 +83,52 @@ URBIS_HD inline Vec3f wallAxisNormal(const WallRecord& wall, uint32_t axis) {
     return axis == 0 ? wall.axisU : (axis == 1 ? Vec3f{0, 1, 0} : wall.normal);
 }
 
+/// The panel in part p's opening at height y (wall v): glass, or below p.panelSplit a curtain
+/// cell's spandrel (its material is to the glass's as FacadeMaterial::Spandrel is to Glass). The
+/// twin tests the spandrel's padded quad before the glass's, so the spandrel wins within e of the split.
+URBIS_HD inline void openingPanel(const WallPart& p, float y, SurfacePart& part, uint32_t& material) {
+    const bool spandrel = y < p.panelSplit + kWallPartPadding;
+    part = spandrel ? SurfacePart::Spandrel : SurfacePart::Glass;
+    material = p.openingMaterial + (spandrel ? uint32_t(FacadeMaterial::Spandrel) - uint32_t(FacadeMaterial::Glass) : 0u);
+}
+
 /// Tests one part with tmin < t < tmax; on a hit shrinks tmax and fills `hit`. A box is solid:
-/// a ray from inside hits its exit face.
+/// a ray from inside hits its exit face; a recess (PartOpening::Recess) is hollow and open at its
+/// front: a ray hits the face it leaves through, or nothing if that is the front. A quad is tested
+/// as a flat box (lo[axis] == hi[axis]), widened by kWallPartPadding within its plane: one slab test
+/// for every part, with no indexing by the part's axis, keeps the GPU's hot code small.
 URBIS_HD inline bool intersectWallPart(const WallPart& p, const WallRay& r, float& tmax, WallHit& hit) {
     constexpr float e = kWallPartPadding;
-    if (p.axis != kWallPartBox) {
-        const int a = p.axis, b = a == 0 ? 1 : 0, c = a == 2 ? 1 : 2;
-        if (r.d[a] == 0.0f) return false;
-        const float t = (p.lo[a] - r.o[a]) * r.invD[a];
-        if (!(t > r.tmin && t < tmax)) return false;
-        const float x = r.o[b] + t * r.d[b], y = r.o[c] + t * r.d[c];
-        if (x < p.lo[b] - e || x > p.hi[b] + e || y < p.lo[c] - e || y > p.hi[c] + e) return false;
-        SurfacePart part = p.part;
-        uint32_t material = p.material;
-        if (p.opening != PartOpening::None) {
-            // As the twin's padded quads: its glass wins where it overlaps the quads around it (it is
-            // tested first), and its frame overlaps the jambs. So the glass reaches e beyond the
-            // opening, and a hole stops e short of it.
-            const float g = p.opening == PartOpening::Glass ? e : -e;
-            if (x >= p.openingLo.x - g && x <= p.openingHi.x + g && y >= p.openingLo.y - g && y <= p.openingHi.y + g) {
-                if (p.opening == PartOpening::Hole) return false;
-                part = SurfacePart::Glass;
-                material = p.openingMaterial;
-            }
-        }
-        tmax = t;
-        hit = {t, uint32_t(a), material, part};
-        return true;
-    }
     float tNear = -3.0e38f, tFar = 3.0e38f;
     uint32_t nearAxis = 0, farAxis = 0;
     for (int a = 0; a < 3; ++a) {
-        const float t0 = (p.lo[a] - r.o[a]) * r.invD[a], t1 = (p.hi[a] - r.o[a]) * r.invD[a];
+        const float pad = p.axis != kWallPartBox && p.axis != a ? e : 0.0f;
+        const float t0 = (p.lo[a] - pad - r.o[a]) * r.invD[a], t1 = (p.hi[a] + pad - r.o[a]) * r.invD[a];
         const float lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
         if (lo > tNear) { tNear = lo; nearAxis = uint32_t(a); }
         if (hi < tFar) { tFar = hi; farAxis = uint32_t(a); }
     }
     if (tNear > tFar) return false;
-    const float t = tNear > r.tmin ? tNear : tFar;
+    const bool exits = !(tNear > r.tmin) || p.opening == PartOpening::Recess;
+    const float t = exits ? tFar : tNear;
     if (!(t > r.tmin && t < tmax)) return false;
+    const uint32_t axis = p.axis != kWallPartBox ? p.axis : (exits ? farAxis : nearAxis);
+    if (p.opening == PartOpening::Recess && axis == 2 && r.d.z > 0.0f) return false;
+    SurfacePart part = p.part;
+    uint32_t material = p.material;
+    if (axis == 2 && p.opening != PartOpening::None) {
+        // As the twin's padded quads: its glass wins where it overlaps the quads around it (it is
+        // tested first), and its frame overlaps the jambs. So the panel reaches e beyond the
+        // opening, and a hole stops e short of it.
+        const float x = r.o.x + t * r.d.x, y = r.o.y + t * r.d.y;
+        const float g = p.opening == PartOpening::Hole ? -e : e;
+        if (x >= p.openingLo.x - g && x <= p.openingHi.x + g && y >= p.openingLo.y - g && y <= p.openingHi.y + g) {
+            if (p.opening == PartOpening::Hole) return false;
+            openingPanel(p, y, part, material);
+        }
+    }
     tmax = t;
-    hit = {t, t == tNear ? nearAxis : farAxis, p.material, p.part};
+    hit = {t, axis, material, part};
     return true;
 }
 

@@ -9,16 +9,19 @@
 
 namespace urbis {
 
-/// What a quad in the wall or glass plane (axis 2) holds where the cell's opening is.
+/// What a part facing w (a quad in the wall or glass plane, a box's faces across w) holds where the
+/// cell's opening is: a window's, or a curtain-wall panel between its mullions.
 enum class PartOpening : uint8_t {
-    None,    ///< nothing: the quad is whole
-    Hole,    ///< a hole: the frame around a window in the wall plane
-    Glass    ///< the window's glass: the glass plane with the room's front wall around it
+    None,    ///< nothing: the part is whole
+    Hole,    ///< a hole: the frame around a window in the wall plane, a curtain cell's mullions
+    Glass,   ///< the panel: the glass plane with the room's front wall (or the mullions) around it
+    Recess   ///< a box that is the opening's recess, open at its front: a ray meets the face it
+             ///< leaves through, a side (jamb, mullion) or the back (the panel)
 };
 
 /// An axis-aligned quad or box in wall coordinates (metres). A quad has lo[axis] == hi[axis]; one
-/// facing w (the wall or the glass plane) may have the cell's opening (u openingLo.x..openingHi.x, v
-/// openingLo.y..openingHi.y).
+/// facing w (the wall or the glass plane) or a box may have the cell's opening (u
+/// openingLo.x..openingHi.x, v openingLo.y..openingHi.y).
 struct WallPart {
     Vec3f lo, hi;
     uint8_t axis = 0;        ///< a quad's normal axis (0: u, 1: v, 2: w), or kWallPartBox
@@ -26,7 +29,10 @@ struct WallPart {
     uint32_t material = 0;
     PartOpening opening = PartOpening::None;
     Vec2f openingLo{}, openingHi{};
-    uint32_t openingMaterial = 0;   ///< the glass's, with PartOpening::Glass
+    /// The panel in the opening (PartOpening::Glass, Recess): glass (openingMaterial), a curtain
+    /// cell's spandrel below v = panelSplit (the material FacadeMaterial::Spandrel is to Glass).
+    uint32_t openingMaterial = 0;
+    float panelSplit = 0;
 };
 
 /// WallPart::axis of a box.
@@ -40,6 +46,9 @@ inline constexpr float kLitRoomChance = 0.3f;
 inline constexpr float kBalconyChance = 0.5f;
 /// Chance that a ground-floor cell of a shop-front wall holds a shop window (as in the thesis).
 inline constexpr float kShopWindowChance = 0.8f;
+/// Half a curtain wall's mullion (the frame of each of its cells) and how far mullions reach out
+/// from the wall plane, metres.
+inline constexpr float kHalfMullion = 0.06f, kMullionDepth = 0.12f;
 
 /// Which parts of a cell a ray can reach first. The glass (or curtain-wall panel) plane closes every
 /// cell: a ray in front of it can only reach the parts in front (frame, jambs, glass, balcony,
@@ -71,11 +80,11 @@ URBIS_HD inline HashStream cellRandom(const WallRecord& wall, uint32_t floor, ui
     return HashStream{hash3(hash2(wall.seed, wall.wallIndex), floor, slot)};
 }
 
-/// What a punched cell holds, drawn from its hash: the cell's extent, its opening (window, balcony
-/// door or shop window) and the room's material.
+/// What a cell holds, drawn from its hash: the cell's extent, its opening (window, balcony door or
+/// shop window; a curtain cell's panel between its mullions) and the room's material.
 struct CellLayout {
     float u0, u1, v0, v1;        ///< the cell
-    float ou0, ou1, ov0, ov1;    ///< the opening (punched walls)
+    float ou0, ou1, ov0, ov1;    ///< the opening
     uint32_t roomMaterial;
     bool balcony;
 };
@@ -90,8 +99,13 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
     HashStream rng = cellRandom(wall, floor, slot);
     const bool lit = rng.uniform() < kLitRoomChance;
     c.roomMaterial = wall.facadeMaterials + uint32_t(lit ? FacadeMaterial::RoomLit : FacadeMaterial::RoomDark);
-    const float choice = rng.uniform();
     c.balcony = false;
+    if (wall.style == WallStyle::Curtain) {
+        c.ou0 = c.u0 + kHalfMullion, c.ou1 = c.u1 - kHalfMullion;
+        c.ov0 = c.v0 + kHalfMullion, c.ov1 = c.v1 - kHalfMullion;
+        return c;
+    }
+    const float choice = rng.uniform();
     if ((wall.flags & kWallShopFront) && floor == 0 && choice < kShopWindowChance) {
         c.ou0 = c.u0 + 0.25f;
         c.ou1 = c.u1 - 0.25f;
@@ -119,12 +133,14 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
 // railings); 22-27 a curtain-wall cell's own parts (its room is the punched cell's). The
 // intersector tests fewer, larger parts of the same surfaces (kPartLists): the frame as one quad with
 // the opening as its hole (28), the glass plane as one quad with the glass in its opening (29), the
-// room as one box seen from inside (30).
+// room as one box seen from inside (30), the window's recess as one box (its jambs and glass, 31);
+// a curtain cell's mullions as one box with the panel as its hole (32), the recess between them
+// (mullions and panel, 33) and its glass plane as one quad, the panel in its opening (34).
 
 /// The coordinates (wall space, metres) that a cell's parts are made of: u, then v, then w values.
 enum CellCoord : uint8_t {
-    U0, U1, OpeningU0, OpeningU1, RoomU0, RoomU1, BalconyU0, BalconyU1, RailU0, RailU1, MullionU0, MullionU1,
-    V0, V1, OpeningV0, OpeningV1, RoomV0, RoomV1, SlabTop, RailTop, MullionV0, MullionV1, PanelSplit,
+    U0, U1, OpeningU0, OpeningU1, RoomU0, RoomU1, BalconyU0, BalconyU1, RailU0, RailU1,
+    V0, V1, OpeningV0, OpeningV1, RoomV0, RoomV1, SlabTop, RailTop, PanelSplit,
     WallPlane, GlassPlane, RoomBack, BalconyFront, RailBack, MullionFront,
     kCellCoordCount
 };
@@ -135,22 +151,20 @@ struct CellCoords {
 };
 
 /// A cell's coordinates: its edges, its opening's, the room inset from the cell by a thin inner
-/// wall, a balcony's slab and railing around the opening, a curtain panel's mullions and the split
-/// between its spandrel and glass.
+/// wall, a balcony's slab and railing around the opening, and the split between a curtain panel's
+/// spandrel and glass (a punched cell's opening is glass from the cell's bottom up).
 URBIS_HD inline CellCoords cellCoords(const WallRecord& wall, const CellLayout& c) {
     constexpr float kInset = 0.05f, kSlab = 0.15f, kRail = 0.05f, kRailHeight = 1.0f;
-    constexpr float kHalfMullion = 0.06f, kMullionDepth = 0.12f;
     CellCoords k;
     float* at = k.at;
     at[U0] = c.u0, at[U1] = c.u1, at[OpeningU0] = c.ou0, at[OpeningU1] = c.ou1;
     at[RoomU0] = c.u0 + kInset, at[RoomU1] = c.u1 - kInset;
     at[BalconyU0] = fmaxf(c.u0 + 0.1f, c.ou0 - 0.6f), at[BalconyU1] = fminf(c.u1 - 0.1f, c.ou1 + 0.6f);
     at[RailU0] = at[BalconyU0] + kRail, at[RailU1] = at[BalconyU1] - kRail;
-    at[MullionU0] = c.u0 + kHalfMullion, at[MullionU1] = c.u1 - kHalfMullion;
     at[V0] = c.v0, at[V1] = c.v1, at[OpeningV0] = c.ov0, at[OpeningV1] = c.ov1;
     at[RoomV0] = c.v0 + kInset, at[RoomV1] = c.v1 - kInset;
     at[SlabTop] = c.v0 + kSlab, at[RailTop] = at[SlabTop] + kRailHeight;
-    at[MullionV0] = c.v0 + kHalfMullion, at[MullionV1] = c.v1 - kHalfMullion, at[PanelSplit] = c.v0 + wall.sillHeight;
+    at[PanelSplit] = wall.style == WallStyle::Curtain ? c.v0 + wall.sillHeight : c.v0;
     at[WallPlane] = 0.0f, at[GlassPlane] = -wall.reveal, at[RoomBack] = -wall.depthBack;
     at[BalconyFront] = wall.depthFront, at[RailBack] = wall.depthFront - kRail, at[MullionFront] = kMullionDepth;
     return k;
@@ -207,44 +221,54 @@ URBIS_TABLE PartRecipe kPartRecipes[] = {
                facadeMaterialCode(FacadeMaterial::Railing)),
     partRecipe(RailU1, SlabTop, WallPlane, BalconyU1, RailTop, RailBack, kWallPartBox, SurfacePart::Railing,
                facadeMaterialCode(FacadeMaterial::Railing)),
-    partRecipe(U0, V0, GlassPlane, MullionU0, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
+    partRecipe(U0, V0, GlassPlane, OpeningU0, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
                facadeMaterialCode(FacadeMaterial::Mullion)),
-    partRecipe(MullionU1, V0, GlassPlane, U1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
+    partRecipe(OpeningU1, V0, GlassPlane, U1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
                facadeMaterialCode(FacadeMaterial::Mullion)),
-    partRecipe(MullionU0, V0, GlassPlane, MullionU1, MullionV0, MullionFront, kWallPartBox, SurfacePart::Mullion,
+    partRecipe(OpeningU0, V0, GlassPlane, OpeningU1, OpeningV0, MullionFront, kWallPartBox, SurfacePart::Mullion,
                facadeMaterialCode(FacadeMaterial::Mullion)),
-    partRecipe(MullionU0, MullionV1, GlassPlane, MullionU1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
+    partRecipe(OpeningU0, OpeningV1, GlassPlane, OpeningU1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
                facadeMaterialCode(FacadeMaterial::Mullion)),
-    partRecipe(MullionU0, MullionV0, GlassPlane, MullionU1, PanelSplit, GlassPlane, 2, SurfacePart::Spandrel,
+    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, PanelSplit, GlassPlane, 2, SurfacePart::Spandrel,
                facadeMaterialCode(FacadeMaterial::Spandrel)),
-    partRecipe(MullionU0, PanelSplit, GlassPlane, MullionU1, MullionV1, GlassPlane, 2, SurfacePart::Glass,
+    partRecipe(OpeningU0, PanelSplit, GlassPlane, OpeningU1, OpeningV1, GlassPlane, 2, SurfacePart::Glass,
                facadeMaterialCode(FacadeMaterial::Glass)),
     partRecipe(U0, V0, WallPlane, U1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode, PartOpening::Hole),
     partRecipe(U0, V0, GlassPlane, U1, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode, PartOpening::Glass),
     partRecipe(RoomU0, RoomV0, RoomBack, RoomU1, RoomV1, GlassPlane, kWallPartBox, SurfacePart::Room,
                kRoomMaterialCode),
+    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV1, WallPlane, kWallPartBox, SurfacePart::Jamb,
+               kWallMaterialCode, PartOpening::Recess),
+    partRecipe(U0, V0, GlassPlane, U1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion), PartOpening::Hole),
+    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV1, MullionFront, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion), PartOpening::Recess),
+    partRecipe(U0, V0, GlassPlane, U1, V1, GlassPlane, 2, SurfacePart::Mullion, facadeMaterialCode(FacadeMaterial::Mullion),
+               PartOpening::Glass),
 };
 
 /// The recipes of each list of parts that cellPart walks, by wall style and CellSide: a punched
-/// cell's front (the frame with its hole, jambs, glass; then a balcony's four boxes), its back (the
-/// glass plane, the room) and both sides as the twin stores them; a curtain-wall cell's front (its
-/// first six) and back (the same and the room), and both sides as the twin stores them.
+/// cell's front (the frame with its hole, the recess; then a balcony's four boxes), its back (the
+/// glass plane, the room) and both sides as the twin stores them; a curtain-wall cell's front (the
+/// mullions with their hole, the recess), back (the glass plane, the room) and both sides as the
+/// twin stores them.
 URBIS_TABLE uint8_t kPartLists[] = {
-    28, 4, 5, 6, 7, 8, 18, 19, 20, 21,                                               // punched, front
+    28, 31, 18, 19, 20, 21,                                                           // punched, front
     29, 30,                                                                           // punched, back
     0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21,   // punched, both
-    22, 23, 24, 25, 26, 27, 30,                                                       // curtain, front or back
+    32, 33,                                                                           // curtain, front
+    34, 30,                                                                           // curtain, back
     22, 23, 24, 25, 26, 27, 13, 14, 15, 16, 17,                                       // curtain, both
 };
 
 /// The lengths of kPartLists' lists (a balcony adds kBalconyParts to a punched cell's front and
-/// both sides) and where each starts.
-inline constexpr int kPunchedFrontParts = 6, kPunchedBackParts = 2, kPunchedBothParts = 18, kBalconyParts = 4;
-inline constexpr int kCurtainFrontParts = 6, kCurtainBackParts = 7, kCurtainBothParts = 11;
-inline constexpr int kPunchedFrontList = 0, kPunchedBackList = kPunchedFrontList + kPunchedFrontParts + kBalconyParts;
-inline constexpr int kPunchedBothList = kPunchedBackList + kPunchedBackParts;
-inline constexpr int kCurtainList = kPunchedBothList + kPunchedBothParts + kBalconyParts;
-inline constexpr int kCurtainBothList = kCurtainList + kCurtainBackParts;
+/// both sides) and where each starts: every cell is two parts on either side of its glass plane.
+inline constexpr int kSideParts = 2, kPunchedBothParts = 18, kBalconyParts = 4, kCurtainBothParts = 11;
+inline constexpr int kPunchedFrontList = 0, kPunchedBackList = kPunchedFrontList + kSideParts + kBalconyParts;
+inline constexpr int kPunchedBothList = kPunchedBackList + kSideParts;
+inline constexpr int kCurtainFrontList = kPunchedBothList + kPunchedBothParts + kBalconyParts;
+inline constexpr int kCurtainBackList = kCurtainFrontList + kSideParts;
+inline constexpr int kCurtainBothList = kCurtainBackList + kSideParts;
 static_assert(sizeof(kPartLists) == kCurtainBothList + kCurtainBothParts, "kPartLists' lists and their lengths");
 static_assert(kMaxCellParts == kPunchedBothParts + kBalconyParts, "the longest list is a punched cell's, both sides");
 
@@ -263,6 +287,7 @@ URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout
         p.openingLo = {k.at[OpeningU0], k.at[OpeningV0]};
         p.openingHi = {k.at[OpeningU1], k.at[OpeningV1]};
         p.openingMaterial = wall.facadeMaterials + uint32_t(FacadeMaterial::Glass);
+        p.panelSplit = k.at[PanelSplit];
     }
     const uint32_t facade = wall.facadeMaterials + (material - facadeMaterialCode(FacadeMaterial(0)));
     p.material = material == kWallMaterialCode ? wall.wallMaterial : (material == kRoomMaterialCode ? c.roomMaterial : facade);
@@ -274,19 +299,19 @@ URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout
 /// plane on both sides, in front of it the frame, jambs, balcony and mullions, behind it the room.
 URBIS_HD inline int cellPartCount(const WallRecord& wall, const CellLayout& c, CellSide side) {
     const bool front = side == CellSide::Front, back = side == CellSide::Back;
-    if (wall.style == WallStyle::Curtain)
-        return front ? kCurtainFrontParts : (back ? kCurtainBackParts : kCurtainBothParts);
+    if (wall.style == WallStyle::Curtain) return front || back ? kSideParts : kCurtainBothParts;
     const int balcony = c.balcony && !back ? kBalconyParts : 0;
-    return (front ? kPunchedFrontParts : (back ? kPunchedBackParts : kPunchedBothParts)) + balcony;
+    return (front || back ? kSideParts : kPunchedBothParts) + balcony;
 }
 
 /// Part k < cellPartCount of the cell on `side` (coordinates k from cellCoords), from kPartLists.
 URBIS_HD inline WallPart cellPart(const WallRecord& wall, const CellLayout& c, const CellCoords& coords, CellSide side,
                                   int k) {
+    const bool curtain = wall.style == WallStyle::Curtain;
     int list;
-    if (wall.style == WallStyle::Curtain) list = side == CellSide::Both ? kCurtainBothList : kCurtainList;
-    else if (side == CellSide::Front) list = kPunchedFrontList;
-    else list = side == CellSide::Back ? kPunchedBackList : kPunchedBothList;
+    if (side == CellSide::Front) list = curtain ? kCurtainFrontList : kPunchedFrontList;
+    else if (side == CellSide::Back) list = curtain ? kCurtainBackList : kPunchedBackList;
+    else list = curtain ? kCurtainBothList : kPunchedBothList;
     return partFromRecipe(wall, c, coords, kPartRecipes[kPartLists[list + k]]);
 }
 
