@@ -30,7 +30,7 @@ WallRecord testWall(WallStyle style) {
     w.windowHeight = 1.5f;
     w.object = 7;
     w.wallIndex = 3;
-    w.seed = 12345;
+    w.cellSeed = 12345;
     return w;
 }
 

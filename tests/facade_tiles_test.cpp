@@ -38,7 +38,7 @@ WallRecord bigWall(WallStyle style) {
     w.windowHeight = 1.6f;
     w.object = 5;
     w.wallIndex = 2;
-    w.seed = 987654;
+    w.cellSeed = 987654;
     return w;
 }
 

@@ -1,5 +1,7 @@
 #include "citygen/facade_layout.h"
 
+#include "math/hash.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -59,7 +61,7 @@ bool layoutWall(const WallContext& context, Vec2d a, Vec2d b, bool outsideRight,
     w.depthFront = style.style == WallStyle::Curtain ? 0.12f : (style.flags & kWallBalconies ? style.balconyDepth : 0.0f);
     w.object = context.object;
     w.wallIndex = wallIndex;
-    w.seed = context.building->seed;
+    w.cellSeed = hash2(context.building->seed, wallIndex);
     w.wallMaterial = context.wallMaterial;
     w.facadeMaterials = context.facadeMaterials;
     w.style = style.style;

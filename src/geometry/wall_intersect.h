@@ -217,19 +217,15 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     int i = int(floorf((pu - wall.gridU) / wall.slotWidth)), j = int(floorf((pv - wall.gridV) / wall.floorHeight));
     i = i < slot0 ? slot0 : (i >= slotEnd ? slotEnd - 1 : i);
     j = j < floor0 ? floor0 : (j >= floorEnd ? floorEnd - 1 : j);
+    // Amanatides and Woo's increments: the distances between two column and two row boundaries.
     const int stepI = r.d.x > 0.0f ? 1 : -1, stepJ = r.d.y > 0.0f ? 1 : -1;
-    auto nextU = [&](int cell) {
-        if (r.d.x == 0.0f) return 3.0e38f;
-        return (wall.gridU + wall.slotWidth * float(cell + (stepI > 0 ? 1 : 0)) - r.o.x) * r.invD.x;
-    };
-    auto nextV = [&](int cell) {
-        if (r.d.y == 0.0f) return 3.0e38f;
-        return (wall.gridV + wall.floorHeight * float(cell + (stepJ > 0 ? 1 : 0)) - r.o.y) * r.invD.y;
-    };
-    float tu = nextU(i), tv = nextV(j);
+    const float du = wall.slotWidth * fabsf(r.invD.x), dv = wall.floorHeight * fabsf(r.invD.y);
+    float tu = r.d.x == 0.0f ? 3.0e38f : (wall.gridU + wall.slotWidth * float(i + (stepI > 0 ? 1 : 0)) - r.o.x) * r.invD.x;
+    float tv = r.d.y == 0.0f ? 3.0e38f : (wall.gridV + wall.floorHeight * float(j + (stepJ > 0 ? 1 : 0)) - r.o.y) * r.invD.y;
     for (;;) {
-        // One part loop for every cell: the frame is one part, so a punched front is six (a closed
-        // form of it let a warp's lanes take two paths and cost the GPU more: docs/gpu_notes.md).
+        // One part loop for every cell, two parts on either side of the glass (a balcony adds four
+        // in front): closed forms let a warp's lanes take different paths and cost the GPU more
+        // (docs/gpu_notes.md).
         const CellLayout c = cellLayout(wall, uint32_t(j), uint32_t(i));
         const CellCoords coords = cellCoords(wall, c);
         const int parts = cellPartCount(wall, c, side);
@@ -242,12 +238,12 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
             if (tu > s.t1 || tu > tmax) break;
             i += stepI;
             if (i < slot0 || i >= slotEnd) break;
-            tu = nextU(i);
+            tu += du;
         } else {
             if (tv > s.t1 || tv > tmax) break;
             j += stepJ;
             if (j < floor0 || j >= floorEnd) break;
-            tv = nextV(j);
+            tv += dv;
         }
     }
     return found;

@@ -77,7 +77,7 @@ URBIS_HD inline void marginParts(const WallRecord& wall, CellParts& out) {
 
 /// The hash that every choice of one cell draws from.
 URBIS_HD inline HashStream cellRandom(const WallRecord& wall, uint32_t floor, uint32_t slot) {
-    return HashStream{hash3(hash2(wall.seed, wall.wallIndex), floor, slot)};
+    return HashStream{hash3(wall.cellSeed, floor, slot)};
 }
 
 /// What a cell holds, drawn from its hash: the cell's extent, its opening (window, balcony door or

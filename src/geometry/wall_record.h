@@ -43,7 +43,7 @@ struct WallRecord {
     float reveal = 0;            ///< depth of the glass behind the wall plane
     uint32_t object = 0;         ///< the building's object id (building index + 1)
     uint32_t wallIndex = 0;      ///< which wall of the building
-    uint32_t seed = 0;           ///< the building's seed
+    uint32_t cellSeed = 0;       ///< hash2(the building's seed, wallIndex): the key of every choice per cell
     uint32_t wallMaterial = 0;   ///< the facade's own material (the building's colour)
     uint32_t facadeMaterials = 0;///< first of FacadeMaterial::Count materials
     WallStyle style = WallStyle::Punched;
