@@ -67,15 +67,15 @@ struct TileRect {
     URBIS_HD explicit TileRect(const WallRecord& w) : u0(w.tileU0()), u1(w.tileU1()), v0(w.tileV0()), v1(w.tileV1()) {}
 };
 
-/// Whether the ray's segment meets the box in wall coordinates that holds all of the tile
-/// (wallTileBounds is the same box in world space), widened by twice the parts' padding so that
-/// rounding never turns away a ray that a padded part at the tile's edge would stop.
-URBIS_HD inline bool reachesWallTile(const WallRecord& wall, const TileRect& tile, const WallRay& r, float tmax) {
+/// The ray's segment inside the box in wall coordinates that holds all of the tile (wallTileBounds
+/// is the same box in world space), widened by twice the parts' padding so that rounding never
+/// turns away a ray that a padded part at the tile's edge would stop; empty if it misses the box.
+URBIS_HD inline SegmentClip segmentInWallTile(const WallRecord& wall, const TileRect& tile, const WallRay& r, float tmax) {
     constexpr float e = 2.0f * kWallPartPadding;
     SegmentClip s{r.tmin, tmax};
     s.clipToBox(r, {wall.tileReachU0() - e, tile.v0 - e, -wall.reachBack() - e},
                 {wall.tileReachU1() + e, tile.v1 + e, wall.depthFront + e}, 3);
-    return !s.empty();
+    return s;
 }
 
 /// The world-space normal of a wall-space axis.
@@ -152,10 +152,15 @@ URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const TileRect
 
 /// The parapet's top and inner face (wall_parapet.h). A tile has it only where it reaches the
 /// wall's top, over its own u range (open at the wall's ends, where the mitres reach beyond them).
-URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect& tile, const WallRay& r, float& tmax,
-                                          WallHit& hit) {
-    if (!(wall.parapetHeight > 0.0f) || wall.tileFloorEnd() < int(wall.floors)) return false;
+/// `segment` is the ray's part in the tile's box: most rays that reach a wall stay below its
+/// parapet there, and are turned away before the two faces are tested.
+URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect& tile, const WallRay& r,
+                                          const SegmentClip& segment, float& tmax, WallHit& hit) {
     constexpr float e = kWallPartPadding;
+    const float top = fmaxf(r.o.y + segment.t0 * r.d.y, r.o.y + segment.t1 * r.d.y);
+    if (!(wall.parapetHeight > 0.0f) || wall.tileFloorEnd() < int(wall.floors) ||
+        top < wall.height - wall.parapetHeight - e)
+        return false;
     const float uLo = wall.slot0 == 0 ? -3.0e38f : tile.u0;
     const float uHi = wall.tileSlotEnd() >= int(wall.slots) ? 3.0e38f : tile.u1;
     bool found = false;
@@ -190,11 +195,12 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     // Many rays that reach a wall in the BVH miss it: the box of a wall that is not aligned with the
     // axes is loose, and a leaf may hold several walls. One slab test turns them away.
     const TileRect tile(wall);
-    if (!reachesWallTile(wall, tile, r, ray.tmax)) return false;
+    const SegmentClip inTile = segmentInWallTile(wall, tile, r, ray.tmax);
+    if (inTile.empty()) return false;
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, tile, r, tmax, hit);
     if (found && anyHit) return true;
-    found |= intersectWallParapet(wall, tile, r, tmax, hit);
+    found |= intersectWallParapet(wall, tile, r, inTile, tmax, hit);
     if (found && anyHit) return true;
     const int slot0 = wall.slot0, slotEnd = wall.tileSlotEnd(), floor0 = wall.floor0, floorEnd = wall.tileFloorEnd();
     if (slot0 >= slotEnd || floor0 >= floorEnd) return found;
