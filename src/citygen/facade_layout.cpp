@@ -1,5 +1,6 @@
 #include "citygen/facade_layout.h"
 
+#include "geometry/wall_parts.h"
 #include "math/hash.h"
 
 #include <algorithm>
@@ -58,7 +59,7 @@ bool layoutWall(const WallContext& context, Vec2d a, Vec2d b, bool outsideRight,
     w.windowWidth = std::clamp(style.windowFraction * w.slotWidth, 0.4f, w.slotWidth - 0.4f);
     w.reveal = style.reveal;
     w.depthBack = std::clamp(0.4f * depthInside, 0.5f, style.roomDepth);
-    w.depthFront = style.style == WallStyle::Curtain ? 0.12f : (style.flags & kWallBalconies ? style.balconyDepth : 0.0f);
+    w.depthFront = style.style == WallStyle::Curtain ? kMullionDepth : (style.flags & kWallBalconies ? style.balconyDepth : 0.0f);
     w.object = context.object;
     w.wallIndex = wallIndex;
     w.cellSeed = hash2(context.building->seed, wallIndex);
