@@ -42,15 +42,16 @@ TEST(GpuCli, DeviceAutoAlwaysRendersAndSaysWhere) {
     EXPECT_NE(r.err.find(gpu ? "(cuda)" : "rendering on the CPU"), std::string::npos) << r.err;
 }
 
-TEST(GpuCli, CpuAndCudaTraceTheSamePaths) {
+TEST(GpuCli, CpuAndCudaTraceNearlyTheSamePaths) {
     URBIS_SKIP_WITHOUT_GPU();
     auto dir = scratchDir("gpu_png");
     ASSERT_EQ(runUrbis(kSmall + "--device cpu --out cpu.png --stats cpu.json", dir).exitCode, 0);
     ASSERT_EQ(runUrbis(kSmall + "--device cuda --out gpu.png --stats gpu.json", dir).exitCode, 0);
     auto cpu = nlohmann::json::parse(readFile(dir / "cpu.json"));
     auto gpu = nlohmann::json::parse(readFile(dir / "gpu.json"));
-    // Bit-equal traversal (-fmad=false) means every path takes the same turns: the same ray count.
-    EXPECT_EQ(cpu["rays"], gpu["rays"]);
+    // Traversal is bit-equal (-fmad=false), shading on the GPU uses the hardware's approximations
+    // (math/kernel_math.h): paths take the same turns but for a few, so nearly the same ray count.
+    EXPECT_NEAR(cpu["rays"].get<double>(), gpu["rays"].get<double>(), 1e-3 * cpu["rays"].get<double>());
     EXPECT_GT(readFile(dir / "gpu.png").size(), 100u);
 }
 

@@ -249,12 +249,15 @@ private:
             map.scale[axis] = extent[axis] > 0.0f ? float(map.binCount) / extent[axis] : 0.0f;
         const bool splittable = extent.x > 0.0f || extent.y > 0.0f || extent.z > 0.0f;
 
+        // A primitive that costs more than a triangle gets a leaf of its own: the traversal defers
+        // such leaves and tests them with their own routine (bvh_traverse.h).
+        const bool leafAllowed = count <= options_.maxLeafSize && !holdsCostly(b, e);
         uint32_t mid;
         if (splittable && depth < kMedianSplitDepth) {
             const Split split = findSplit(b, e, map, halfArea(box));
             const float leafCost = options_.intersectionCost * float(split.primCost);
-            if (split.axis < 0 || (count <= options_.maxLeafSize && leafCost <= split.cost)) {
-                if (count <= options_.maxLeafSize) {
+            if (split.axis < 0 || (leafAllowed && leafCost <= split.cost)) {
+                if (leafAllowed) {
                     slots_[slot] = makeNode(box, b, count);
                     return;
                 }
@@ -272,13 +275,21 @@ private:
                 return;
             }
         } else {
-            if (count <= options_.maxLeafSize) {
+            if (leafAllowed) {
                 slots_[slot] = makeNode(box, b, count);
                 return;
             }
             mid = medianSplit(b, e, map);
         }
         finishInterior(slot, b, mid, e, box, reduceBounds(b, mid, false), reduceBounds(mid, e, false), depth);
+    }
+
+    /// Whether order_[b, e) holds a primitive of cost above one.
+    bool holdsCostly(uint32_t b, uint32_t e) const {
+        if (costs_.empty()) return false;
+        for (uint32_t i = b; i < e; ++i)
+            if (costs_[order_[i]] > 1) return true;
+        return false;
     }
 
     /// Splits order_[b, e) in two halves by centroid along the widest centroid axis.
@@ -385,6 +396,14 @@ std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary) {
     return wide;
 }
 
+/// Sets kBvhCostlyLeaf on the leaves that hold a primitive of cost above one (each alone).
+void markCostlyLeaves(const std::vector<uint32_t>& primCosts, Bvh& bvh) {
+    for (BvhNode& node : bvh.nodes)
+        for (int l = 0; l < kBvhWidth; ++l)
+            for (uint32_t i = node.child[l]; i < node.child[l] + node.leafSize(l); ++i)
+                if (primCosts[bvh.primOrder[i]] > 1) node.primCount[l] |= kBvhCostlyLeaf;
+}
+
 } // namespace
 
 Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options,
@@ -397,6 +416,7 @@ Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& opt
     Builder builder(primBounds, primCosts, options, bvh);
     builder.run();
     bvh.nodes = collapse(builder.compact());
+    if (!primCosts.empty()) markCostlyLeaves(primCosts, bvh);
     return bvh;
 }
 
@@ -410,7 +430,7 @@ float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
         for (int l = 0; l < kBvhWidth; ++l) {
             const double relArea = node.box(l).area() / rootArea;
             if (node.primCount[l] > 0)
-                cost += relArea * options.intersectionCost * node.primCount[l];
+                cost += relArea * options.intersectionCost * node.leafSize(l);
             else if (!node.box(l).empty())
                 cost += relArea * options.traversalCost;
         }

@@ -33,8 +33,8 @@ struct Bvh {
 /// stays under 64 levels (object-median splits from depth 32 on), so traversal stacks of
 /// kBvhStackSize never overflow. An empty input gives one empty node that no ray hits.
 /// `primCosts` weighs each primitive's intersection cost in units of intersectionCost (empty: 1
-/// each), so that expensive primitives (procedural walls) get leaves of their own. Integers keep
-/// the parallel build deterministic.
+/// each); a primitive of cost above one (a procedural wall) gets a leaf of its own, marked with
+/// kBvhCostlyLeaf. Integers keep the parallel build deterministic.
 Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options = {},
              const std::vector<uint32_t>& primCosts = {});
 

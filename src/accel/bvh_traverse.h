@@ -16,9 +16,9 @@
 
 namespace urbis {
 
-/// Entries of the traversal stack: the build keeps the tree under 64 levels and a node
-/// pushes at most kBvhWidth - 1 children.
-inline constexpr int kBvhStackSize = 64 * (kBvhWidth - 1);
+/// Entries of the traversal stack: the build keeps the tree under 64 levels; a node that the
+/// traversal goes on into pushes at most kBvhWidth - 1 entries, one that it leaves kBvhWidth.
+inline constexpr int kBvhStackSize = 64 * (kBvhWidth - 1) + kBvhWidth;
 
 /// What the slab test needs of a ray, computed once per ray.
 struct BvhRay {
@@ -97,75 +97,177 @@ URBIS_HD inline unsigned intersectLanes(const BvhNode& node, const BvhRay& r, fl
 #endif
 }
 
-/// Closest-hit (AnyHit = false) or any-hit (AnyHit = true) traversal of a BVH built by
-/// buildBvh, in world space. Leaves of a visited node are tested at once (shrinking
-/// ray.tmax early); interior children are visited nearest first and skipped when they start
-/// beyond the closest hit so far; any-hit queries return at the first hit.
-/// intersect(uint32_t prim, Ray& ray, Hit& hit) -> bool tests one primitive (prim indexes
-/// leaf order, i.e. positions in the build's primOrder); on a hit it fills hit and shrinks
-/// ray.tmax. Returns whether anything was hit. No allocation; fixed-size stack. `anyHit` is a
-/// run-time flag so that one inlined copy can serve both queries where code size matters (the GPU
-/// path tracer: see traceScene); the template below fixes it at compile time.
-template <typename IntersectPrim>
-URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect) {
+/// Whether every lane of a warp that runs this together wants to do something costly now, so that
+/// the costly code runs with all of them rather than a few at a time; on the CPU (a ray is its own
+/// warp) whether this one does. Every lane that reaches the call must make it, wanting or not.
+/// Half or a quarter of the lanes were measured too: all is fastest (docs/gpu_notes.md, eighth
+/// session).
+URBIS_HD inline bool warpAll(bool wants) {
+#if URBIS_GPU_CODE
+    return __all_sync(__activemask(), wants);
+#else
+    return wants;
+#endif
+}
+
+/// Sorts four keys in ascending order (a network of five compare-exchanges: no branches).
+URBIS_HD inline void sortFour(uint32_t (&k)[4]) {
+    auto exchange = [&](int a, int b) {
+        const uint32_t lo = k[a] < k[b] ? k[a] : k[b], hi = k[a] < k[b] ? k[b] : k[a];
+        k[a] = lo;
+        k[b] = hi;
+    };
+    exchange(0, 1);
+    exchange(2, 3);
+    exchange(0, 2);
+    exchange(1, 3);
+    exchange(1, 2);
+}
+
+/// Closest-hit or any-hit (`anyHit`) traversal of a BVH built by buildBvh, in world space.
+/// intersect(uint32_t prim, Ray& ray, Hit& hit) -> bool tests one primitive (prim indexes leaf
+/// order, i.e. positions in the build's primOrder); on a hit it fills hit and shrinks ray.tmax.
+/// Leaves of a visited node are tested at once (shrinking ray.tmax early); interior children are
+/// visited nearest first and skipped when they start beyond the closest hit so far; any-hit
+/// queries return at the first hit. Returns whether anything was hit. No allocation; fixed-size
+/// stack. `anyHit` is a run-time flag so that one inlined copy can serve both queries where code
+/// size matters (the GPU path tracer: see traceScene).
+///
+/// With DeferCostly, leaves marked kBvhCostlyLeaf go to intersectCostly instead, deferred: a lane
+/// holds one such leaf and goes on with the traversal (or, with nothing else to do, waits) until
+/// every lane of its warp that is traversing holds one (warpAll), so that the costly test runs
+/// with all of them (docs/gpu_notes.md, eighth session). The order of tests then depends on the warp, so
+/// equal distances go to the lower primitive index: the CPU and the GPU find the same hit.
+template <bool DeferCostly, typename IntersectPrim, typename IntersectCostly>
+URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect,
+                          IntersectCostly&& intersectCostly) {
+    // A deferred leaf (one primitive: see buildBvh) on the stack or pending: its slot, with kLeafItem set.
+    constexpr uint32_t kNoItem = 0xffffffffu, kLeafItem = 0x80000000u;
+    constexpr uint32_t kLaneBits = kBvhWidth - 1;
     const BvhRay r(ray);
     struct Entry {
-        uint32_t node;
+        uint32_t item;
         float tEntry;
     };
     Entry stack[kBvhStackSize];
     int top = 0;
     bool found = false;
-    uint32_t current = 0;
+    uint32_t hitSlot = kNoItem, current = 0, pending = kNoItem;
+    float pendingEntry = 0.0f;   // where the ray enters the pending leaf's box
+    auto test = [&](auto& intersectPrim, uint32_t slot) {
+        if (!DeferCostly) return intersectPrim(slot, ray, hit);
+        const float tmax = ray.tmax;
+        // A tie goes to the lower slot: it may test up to the next float (tmax is positive and finite).
+        if (found && slot < hitSlot) ray.tmax = __builtin_bit_cast(float, __builtin_bit_cast(uint32_t, tmax) + 1u);
+        if (intersectPrim(slot, ray, hit)) {
+            hitSlot = slot;
+            return true;
+        }
+        ray.tmax = tmax;
+        return false;
+    };
+    // Pops the next subtree that may still hold something closer than ray.tmax into `current`, or the
+    // next deferred leaf into `pending` if it is free. Returns whether `current` was set.
+    auto popNext = [&] {
+        while (top > 0) {
+            const Entry e = stack[--top];
+            if (e.tEntry > ray.tmax) continue;
+            if (DeferCostly && (e.item & kLeafItem)) {
+                if (pending != kNoItem) {
+                    ++top;   // one deferred leaf at a time
+                    return false;
+                }
+                pending = e.item;
+                pendingEntry = e.tEntry;
+                continue;
+            }
+            current = e.item;
+            return true;
+        }
+        return false;
+    };
     for (;;) {
+        if constexpr (DeferCostly) {
+            if (warpAll(pending != kNoItem)) {
+                // A hit found since the leaf was deferred may have put it out of reach.
+                if (pendingEntry <= ray.tmax && test(intersectCostly, pending & ~kLeafItem)) {
+                    found = true;
+                    if (anyHit) return true;
+                }
+                pending = kNoItem;
+            }
+        }
+        if (DeferCostly && current == kNoItem && !popNext()) {
+            if (pending == kNoItem) return found;
+            continue;   // nothing to do but the deferred leaf: wait for the warp
+        }
         const BvhNode& node = nodes[current];
         float tEntry[kBvhWidth];
         const unsigned hitMask = intersectLanes(node, r, ray.tmin, ray.tmax, tEntry);
+        unsigned costly = 0;
+#if URBIS_GPU_CODE
+#pragma unroll(DeferCostly ? 1 : kBvhWidth)   // one copy of the primitive test beside the deferred one
+#endif
         for (int l = 0; l < kBvhWidth; ++l) {
             if (!(hitMask >> l & 1u) || node.primCount[l] == 0) continue;
-            for (uint32_t i = 0; i < node.primCount[l]; ++i) {
-                if (intersect(node.child[l] + i, ray, hit)) {
+            if (DeferCostly && node.costlyLeaf(l)) {
+                costly |= 1u << l;
+                continue;
+            }
+            for (uint32_t i = 0; i < node.leafSize(l); ++i) {
+                if (test(intersect, node.child[l] + i)) {
                     found = true;
                     if (anyHit) return true;
                 }
             }
         }
-        // Interior children still in reach, visited nearest first: the nearest next, the others
-        // pushed farthest first. Each child's place is its rank among them (ties by lane, as a
-        // stable sort would order them), written straight to the stack: no sorted copy in the
-        // GPU's local memory (docs/gpu_notes.md, fifth session).
+        // Interior children (and deferred leaves) still in reach, visited nearest first: the nearest
+        // interior child next if nothing deferred is nearer, the others pushed farthest first. Each
+        // one's place is its rank among them (ties by lane, as a stable sort would order them),
+        // written straight to the stack: no sorted copy in the GPU's local memory (docs/gpu_notes.md,
+        // fifth session). The nearest deferred leaf is held at once if no other is.
         unsigned inner = 0;
+        for (int l = 0; l < kBvhWidth; ++l) {
+            const bool inReach = hitMask >> l & 1u && tEntry[l] <= ray.tmax;
+            inner |= (inReach && node.primCount[l] == 0 ? 1u : 0u) << l;
+            costly &= ~((inReach ? 0u : 1u) << l);
+        }
+        if (DeferCostly && costly != 0 && pending == kNoItem) {
+            int nearest = -1;
+            for (int l = 0; l < kBvhWidth; ++l)
+                if (costly >> l & 1u && (nearest < 0 || tEntry[l] < tEntry[nearest])) nearest = l;
+            pending = kLeafItem | node.child[nearest];
+            pendingEntry = tEntry[nearest];
+            costly &= ~(1u << nearest);
+        }
+        static_assert(kBvhWidth == 4, "sortFour and childAt take four lanes");
+        // The queued lanes sorted by entry distance: keys of the distance's bits (non-negative floats
+        // order as their bits) with the lane in the two lowest, by a sorting network of five exchanges.
+        const unsigned queued = inner | costly;
+        uint32_t key[kBvhWidth];
         for (int l = 0; l < kBvhWidth; ++l)
-            inner |= (hitMask >> l & 1u && node.primCount[l] == 0 && tEntry[l] <= ray.tmax ? 1u : 0u) << l;
-        if (inner != 0) {
-            int count = 0;
-            for (int l = 0; l < kBvhWidth; ++l) count += int(inner >> l & 1u);
-            for (int l = 0; l < kBvhWidth; ++l) {
-                if (!(inner >> l & 1u)) continue;
-                int rank = 0;
-                for (int m = 0; m < kBvhWidth; ++m)
-                    rank += int(inner >> m & 1u && (m < l ? tEntry[m] <= tEntry[l] : tEntry[m] < tEntry[l]));
-                if (rank == 0) current = node.child[l];
-                else stack[top + count - 1 - rank] = {node.child[l], tEntry[l]};
-            }
-            top += count - 1;
-            continue;
+            key[l] = queued >> l & 1u ? (__builtin_bit_cast(uint32_t, tEntry[l]) & ~kLaneBits) | uint32_t(l) : ~0u;
+        sortFour(key);
+        // A lane's child by selects from the four loaded at once: indexing the node in memory by a
+        // sorted lane would put a load's latency between this node and the next.
+        const uint32_t c0 = node.child[0], c1 = node.child[1], c2 = node.child[2], c3 = node.child[3];
+        auto childAt = [&](uint32_t lane) { return lane & 2u ? (lane & 1u ? c3 : c2) : (lane & 1u ? c1 : c0); };
+        current = kNoItem;
+        for (int i = kBvhWidth - 1; i >= 0; --i) {
+            if (key[i] == ~0u) continue;
+            const uint32_t lane = key[i] & kLaneBits;
+            const bool interior = inner >> lane & 1u;
+            if (i == 0 && interior) current = childAt(lane);
+            else stack[top++] = {childAt(lane) | (interior ? 0u : kLeafItem), __builtin_bit_cast(float, key[i] & ~kLaneBits)};
         }
-        // Pop the next subtree that may still hold something closer than ray.tmax.
-        for (;;) {
-            if (top == 0) return found;
-            const Entry e = stack[--top];
-            if (e.tEntry <= ray.tmax) {
-                current = e.node;
-                break;
-            }
-        }
+        if (!DeferCostly && current == kNoItem && !popNext()) return found;
     }
 }
 
-template <bool AnyHit, typename IntersectPrim>
-URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, IntersectPrim&& intersect) {
-    return traverseBvh(nodes, ray, hit, AnyHit, intersect);
+/// traverseBvh without deferred leaves: every primitive goes to `intersect`.
+template <typename IntersectPrim>
+URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect) {
+    return traverseBvh<false>(nodes, ray, hit, anyHit, intersect, intersect);
 }
 
 } // namespace urbis

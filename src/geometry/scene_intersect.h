@@ -26,7 +26,7 @@ struct SurfaceHit {
 URBIS_HD inline SurfaceHit triangleSurface(const SceneView& scene, uint32_t prim, float t) {
     const Triangle& tri = scene.geometry.triangles[prim];
     const TriangleInfo info = scene.triangleInfo[prim];
-    return {SurfaceKind::Triangle, t, normalize(cross(tri.p1 - tri.p0, tri.p2 - tri.p0)), info.material, info.object,
+    return {SurfaceKind::Triangle, t, approxNormalize(cross(tri.p1 - tri.p0, tri.p2 - tri.p0)), info.material, info.object,
             SurfacePart(info.part)};
 }
 
@@ -36,32 +36,30 @@ URBIS_HD inline SurfaceHit groundSurface(const SceneView& scene, float t) {
 }
 
 /// Closest hit (or with anyHit the first found) over a BVH whose leaves mix kinds
-/// (scene.primRefs): a switch per leaf primitive.
+/// (scene.primRefs): triangles are tested where the traversal meets them, walls (each alone in a
+/// leaf marked kBvhCostlyLeaf) when enough of a GPU warp's lanes hold one (traverseBvh).
 URBIS_HD inline SurfaceHit traceMixed(const SceneView& scene, Ray& ray, bool anyHit) {
     const WatertightRay wr(ray);
     Hit hit;
     WallHit wallHit;
-    traverseBvh(scene.geometry.nodes, ray, hit, anyHit, [&](uint32_t slot, Ray& r, Hit& h) {
+    auto testTriangle = [&](uint32_t slot, Ray& r, Hit& h) {
         const uint32_t ref = scene.primRefs[slot];
-        switch (primRefKind(ref)) {
-        case PrimKind::Triangle: {
-            float t, u, v;
-            if (!intersectTriangle(scene.geometry.triangles[primRefIndex(ref)], r, wr, t, u, v)) return false;
-            h = {ref, t, u, v};
-            r.tmax = t;
-            return true;
-        }
-        case PrimKind::Wall: {
-            WallHit w;
-            if (!intersectWall(scene.walls[primRefIndex(ref)], r, w, anyHit)) return false;
-            h = {ref, w.t, 0, 0};
-            wallHit = w;
-            r.tmax = w.t;
-            return true;
-        }
-        }
-        return false;
-    });
+        float t, u, v;
+        if (!intersectTriangle(scene.geometry.triangles[primRefIndex(ref)], r, wr, t, u, v)) return false;
+        h = {ref, t, u, v};
+        r.tmax = t;
+        return true;
+    };
+    auto testWall = [&](uint32_t slot, Ray& r, Hit& h) {
+        const uint32_t ref = scene.primRefs[slot];
+        WallHit w;
+        if (!intersectWall(scene.walls[primRefIndex(ref)], r, w, anyHit)) return false;
+        h = {ref, w.t, 0, 0};
+        wallHit = w;
+        r.tmax = w.t;
+        return true;
+    };
+    traverseBvh<true>(scene.geometry.nodes, ray, hit, anyHit, testTriangle, testWall);
     if (!hit.valid()) return {};
     const uint32_t index = primRefIndex(hit.prim);
     if (primRefKind(hit.prim) == PrimKind::Triangle) return triangleSurface(scene, index, hit.t);

@@ -18,7 +18,7 @@ URBIS_HD inline bool isSpecular(const Material& m) { return m.kind == MaterialKi
 /// Probability that a Glossy material samples its Phong lobe rather than its diffuse part.
 URBIS_HD inline float glossyLobeChance(const Material& m) {
     float d = luminance(m.albedo), s = luminance(m.specular);
-    return d + s > 0.0f ? s / (d + s) : 0.0f;
+    return d + s > 0.0f ? approxDivide(s, d + s) : 0.0f;
 }
 
 /// f(wo, wi) * cos(wi, n) of a non-specular material; zero below the surface.
@@ -28,7 +28,7 @@ URBIS_HD inline Vec3f evalBsdfCos(const Material& m, Vec3f wo, Vec3f wi, Vec3f n
     Vec3f f = m.albedo * (1.0f / kPi);
     if (m.kind == MaterialKind::Glossy) {
         float c = fmaxf(0.0f, dot(wi, reflect(wo, n)));
-        f += m.specular * ((m.exponent + 2.0f) / (2.0f * kPi) * powPositive(c, m.exponent));
+        f += m.specular * (approxDivide(m.exponent + 2.0f, 2.0f * kPi) * powPositive(c, m.exponent));
     }
     return f * cosine;
 }
@@ -58,7 +58,7 @@ URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, 
     case MaterialKind::Glass: {
         // Schlick's approximation (Schlick 1994) of the Fresnel reflectance; reflect or transmit in
         // proportion, so each branch's weight is 1 (reflection) or the tint (transmission).
-        float r0 = (m.ior - 1.0f) / (m.ior + 1.0f);
+        float r0 = approxDivide(m.ior - 1.0f, m.ior + 1.0f);
         r0 *= r0;
         float c = 1.0f - fminf(1.0f, fabsf(dot(wo, n)));
         float fresnel = r0 + (1.0f - r0) * c * c * c * c * c;
@@ -75,7 +75,7 @@ URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, 
                                             : Frame::fromZ(n).toWorld(sampleCosineHemisphere(u1, u2));
         float pdf = bsdfPdf(m, wo, wi, n);
         if (!(pdf > 0.0f)) return false;
-        s = {wi, evalBsdfCos(m, wo, wi, n) / pdf, false};
+        s = {wi, evalBsdfCos(m, wo, wi, n) * approxDivide(1.0f, pdf), false};
         return true;
     }
     }

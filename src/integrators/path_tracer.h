@@ -32,7 +32,8 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                                      uint32_t px, uint32_t py, uint32_t sampleIndex) {
     SampleStream rng{settings.seed, py * settings.width + px, sampleIndex};
     float jx = rng.draw(), jy = rng.draw();
-    Ray ray = camera.generateRay((float(px) + jx) / float(settings.width), (float(py) + jy) / float(settings.height));
+    Ray ray = camera.generateRay(approxDivide(float(px) + jx, float(settings.width)),
+                                 approxDivide(float(py) + jy, float(settings.height)));
     PathSample out;
     Vec3f throughput{1, 1, 1};
     bool specularBounce = false;   // the camera ray does not show the sun's disk
@@ -54,14 +55,14 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
         if (!hit.valid()) {
             out.radiance += throughput * scene.sky.radiance(ray.dir);
             // Light sampling cannot reach the disk through a mirror or glass: count it here.
-            if (specularBounce && scene.sun.contains(normalize(ray.dir))) out.radiance += throughput * scene.sun.radiance;
+            if (specularBounce && scene.sun.contains(approxNormalize(ray.dir))) out.radiance += throughput * scene.sun.radiance;
             break;
         }
         Vec3f normal = hit.normal;
         const Material& material = scene.materials[hit.material];
         // No emitter is light-sampled yet, so every hit counts its emission in full.
         out.radiance += throughput * material.emission;
-        Vec3f wo = normalize(-ray.dir);
+        Vec3f wo = approxNormalize(-ray.dir);
         Vec3f position = ray.origin + ray.dir * hit.t;
 
         // Next-event estimation towards the sun's disk; the sky lookup never includes the disk.
@@ -71,7 +72,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             Vec3f fCos = evalBsdfCos(material, wo, toSun, normal);
             if (maxComponent(fCos) > 0.0f) {
                 shadow = Ray{offsetRayOrigin(position, normal), toSun};
-                sunlight = throughput * fCos * scene.sun.radiance * (1.0f / scene.sun.pdf());
+                sunlight = throughput * fCos * scene.sun.radiance * approxDivide(1.0f, scene.sun.pdf());
                 shadowPending = true;
             }
         }
@@ -89,7 +90,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             if (depth + 1 >= settings.rrDepth) {
                 float survival = fminf(maxComponent(throughput), settings.rrSurvival);
                 goesOn = rng.draw() < survival;
-                throughput *= 1.0f / survival;
+                throughput *= approxDivide(1.0f, survival);
             }
         }
         if (!goesOn) {

@@ -1,7 +1,7 @@
 // Orthonormal frames around a normal (host+device).
 #pragma once
 
-#include "math/vec.h"
+#include "math/kernel_math.h"
 
 namespace urbis {
 
@@ -12,7 +12,7 @@ struct Frame {
     /// Duff et al. 2017, "Building an Orthonormal Basis, Revisited" (branchless, no singularity).
     URBIS_HD static Frame fromZ(Vec3f n) {
         float sign = copysignf(1.0f, n.z);
-        float a = -1.0f / (sign + n.z);
+        float a = approxDivide(-1.0f, sign + n.z);
         float b = n.x * n.y * a;
         return {Vec3f{1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x}, Vec3f{b, sign + n.y * n.y * a, -n.y}, n};
     }

@@ -1,7 +1,11 @@
-// sin, cos and pow for per-ray code (host+device). On the GPU they avoid the general library
-// routines, whose handling of arguments that never occur here (huge angles, negative bases) made
-// up some 1,100 instructions of the path-tracing kernel, whose size is what limits it
-// (docs/gpu_notes.md). The CPU keeps sinf, cosf and powf, so its images do not change.
+// Shading math for per-ray code (host+device): sin, cos, pow, quotients, square roots and unit
+// vectors of sampled directions, pdfs and weights. On the GPU they are the hardware's
+// approximations: the library's exact routines handle arguments that never occur here (huge
+// angles, negative bases, denormal quotients) with code that made the render kernel larger, and its
+// size is what limits it (docs/gpu_notes.md, fourth and eighth sessions). The CPU keeps the exact
+// routines, so its images do not change; the GPU's agree with them within
+// tests/gpu_render_test.cpp's tolerance. Hits stay exact on both (traversal and intersection do not
+// use these), so the GPU's traversal matches the CPU's bit for bit.
 #pragma once
 
 #include "math/vec.h"
@@ -12,11 +16,13 @@ namespace urbis {
 
 constexpr float kPi = 3.14159265358979323846f;
 
-/// sin and cos of an angle within [-pi, 2 pi]; on the GPU through sincospif, which needs no
-/// reduction of huge arguments.
+/// sin and cos of an angle within [-pi, 2 pi]; on the GPU through the hardware's approximation,
+/// within 2^-21.4 of the true values on [-pi, pi] (CUDA C++ Programming Guide, intrinsic functions),
+/// where the angle is brought first. sincospif took 110 instructions more, and every instruction
+/// of the walls' render kernel costs it time (docs/gpu_notes.md, eighth session).
 URBIS_HD inline void sinCos(float angle, float& s, float& c) {
 #if defined(__CUDA_ARCH__)
-    sincospif(angle * (1.0f / kPi), &s, &c);
+    __sincosf(angle > kPi ? angle - 2.0f * kPi : angle, &s, &c);
 #else
     s = sinf(angle);
     c = cosf(angle);
@@ -31,6 +37,33 @@ URBIS_HD inline float powPositive(float x, float y) {
     return __powf(x, y);
 #else
     return powf(x, y);
+#endif
+}
+
+/// a / b; on the GPU __fdividef (within 2 ulp for |b| < 2^126).
+URBIS_HD inline float approxDivide(float a, float b) {
+#if defined(__CUDA_ARCH__)
+    return __fdividef(a, b);
+#else
+    return a / b;
+#endif
+}
+
+/// sqrt(x) for x >= 0; on the GPU x / sqrt(x) by the hardware's reciprocal square root.
+URBIS_HD inline float approxSqrt(float x) {
+#if defined(__CUDA_ARCH__)
+    return x > 0.0f ? x * rsqrtf(x) : 0.0f;
+#else
+    return sqrtf(x);
+#endif
+}
+
+/// v / |v|; on the GPU by the hardware's reciprocal square root.
+URBIS_HD inline Vec3f approxNormalize(Vec3f v) {
+#if defined(__CUDA_ARCH__)
+    return v * rsqrtf(dot(v, v));
+#else
+    return normalize(v);
 #endif
 }
 

@@ -12,38 +12,38 @@ URBIS_HD inline Vec3f sampleCosineHemisphere(float u1, float u2) {
     if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f, 1.0f};
     if (a * a > b * b) {
         r = a;
-        phi = (kPi / 4.0f) * (b / a);
+        phi = (kPi / 4.0f) * approxDivide(b, a);
     } else {
         r = b;
-        phi = kPi / 2.0f - (kPi / 4.0f) * (a / b);
+        phi = kPi / 2.0f - (kPi / 4.0f) * approxDivide(a, b);
     }
     float s, c;
     sinCos(phi, s, c);
     float x = r * c, y = r * s;
-    return {x, y, sqrtf(fmaxf(0.0f, 1.0f - x * x - y * y))};
+    return {x, y, approxSqrt(fmaxf(0.0f, 1.0f - x * x - y * y))};
 }
-URBIS_HD inline float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? cosTheta / kPi : 0.0f; }
+URBIS_HD inline float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? approxDivide(cosTheta, kPi) : 0.0f; }
 
 /// Uniform direction inside the cone of half-angle acos(cosMax) about +z.
 URBIS_HD inline Vec3f sampleUniformCone(float u1, float u2, float cosMax) {
     float cosTheta = 1.0f - u1 * (1.0f - cosMax);
-    float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
+    float sinTheta = approxSqrt(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
     float s, c;
     sinCos(2.0f * kPi * u2, s, c);
     return {sinTheta * c, sinTheta * s, cosTheta};
 }
-URBIS_HD inline float uniformConePdf(float cosMax) { return 1.0f / (2.0f * kPi * (1.0f - cosMax)); }
+URBIS_HD inline float uniformConePdf(float cosMax) { return approxDivide(1.0f, 2.0f * kPi * (1.0f - cosMax)); }
 
 /// Direction about +z distributed as the normalised Phong lobe (n + 1) / (2 pi) cos^n(theta).
 URBIS_HD inline Vec3f samplePhongLobe(float u1, float u2, float exponent) {
-    float cosTheta = powPositive(u1, 1.0f / (exponent + 1.0f));
-    float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
+    float cosTheta = powPositive(u1, approxDivide(1.0f, exponent + 1.0f));
+    float sinTheta = approxSqrt(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
     float s, c;
     sinCos(2.0f * kPi * u2, s, c);
     return {sinTheta * c, sinTheta * s, cosTheta};
 }
 URBIS_HD inline float phongLobePdf(float cosTheta, float exponent) {
-    return cosTheta > 0.0f ? (exponent + 1.0f) / (2.0f * kPi) * powPositive(cosTheta, exponent) : 0.0f;
+    return cosTheta > 0.0f ? approxDivide(exponent + 1.0f, 2.0f * kPi) * powPositive(cosTheta, exponent) : 0.0f;
 }
 
 } // namespace urbis

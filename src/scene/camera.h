@@ -1,6 +1,7 @@
 // A pinhole camera (host+device POD). World: x east, y up, z south; metres.
 #pragma once
 
+#include "math/kernel_math.h"
 #include "math/ray.h"
 
 namespace urbis {
@@ -19,7 +20,7 @@ struct Camera {
         float py = (1.0f - 2.0f * sy) * tanHalfFovY;
         Ray ray;
         ray.origin = position;
-        ray.dir = normalize(forward + right * px + up * py);
+        ray.dir = approxNormalize(forward + right * px + up * py);
         return ray;
     }
 };

@@ -16,6 +16,7 @@ constexpr float kTileOverlap = 0.01f;
 /// leaf tested each of them; 4, 8 and 16 were measured on the H100 (docs/gpu_notes.md): equal on
 /// the generated city, 16 best on San Francisco.
 constexpr uint32_t kWallCostInTriangles = 16;
+static_assert(kWallCostInTriangles > 1, "walls go in costly leaves, which traceMixed tests deferred");
 
 /// The start of run k of n equal runs over `count` cells.
 int runStart(int count, int runs, int k) { return int(int64_t(count) * k / runs); }
