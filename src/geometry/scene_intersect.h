@@ -79,22 +79,18 @@ enum class SceneLayout : uint8_t { Any, Mixed, Triangles };
 template <SceneLayout Layout = SceneLayout::Any>
 URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyHit) {
     SurfaceHit out;
-    if (anyHit) {
-        const float tGround = scene.ground.intersect(ray);
-        if (tGround > 0.0f) return groundSurface(scene, tGround);
-    }
+    // The ground within the ray's whole reach, once: a shadow ray it blocks needs nothing else, and
+    // it is in front of whatever the traversal finds closer than the ray's end only if nearer.
+    const float tGround = scene.ground.intersect(ray);
+    if (anyHit && tGround > 0.0f) return groundSurface(scene, tGround);
     if (Layout == SceneLayout::Any ? scene.primRefs != nullptr : Layout == SceneLayout::Mixed) {
         out = traceMixed(scene, ray, anyHit);
     } else {
         Hit hit = traceTriangles(scene.geometry, ray, anyHit);
-        if (hit.valid()) {
-            out = triangleSurface(scene, hit.prim, hit.t);
-            ray.tmax = hit.t;
-        }
+        if (hit.valid()) out = triangleSurface(scene, hit.prim, hit.t);
     }
     if (anyHit) return out;
-    float tGround = scene.ground.intersect(ray);
-    if (tGround > 0.0f) out = groundSurface(scene, tGround);
+    if (tGround > 0.0f && !(out.valid() && out.t <= tGround)) out = groundSurface(scene, tGround);
     if (out.valid() && dot(out.normal, ray.dir) > 0.0f) out.normal = -out.normal;
     // -0 + 0 is +0: signed zeros differ between a wall's exact axes and its twin's cross products, and
     // the shading frame (Frame::fromZ) branches on the sign of z, so both would sample differently.

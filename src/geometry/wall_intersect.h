@@ -167,8 +167,10 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect
     if (r.d.y != 0.0f) {
         const float t = (wall.height - r.o.y) * r.invD.y;
         const float u = r.o.x + t * r.d.x, w = r.o.z + t * r.d.z;
-        if (t > r.tmin && t < tmax && w >= -wall.parapetThickness - e && w <= e &&
-            u >= fmaxf(uLo, parapetStartAt(wall, w)) - e && u <= fminf(uHi, parapetEndAt(wall, w)) + e) {
+        float start, end;
+        parapetSpanAt(wall, w, start, end);
+        if (t > r.tmin && t < tmax && w >= -wall.parapetThickness - e && w <= e && u >= fmaxf(uLo, start) - e &&
+            u <= fminf(uHi, end) + e) {
             tmax = t;
             hit = {t, 1u, wall.wallMaterial, SurfacePart::Facade};
             found = true;

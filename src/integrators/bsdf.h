@@ -67,12 +67,16 @@ URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, 
         return true;
     }
     case MaterialKind::Lambertian:
-        // Cosine sampling makes f * cos / pdf equal to the albedo.
-        s = {Frame::fromZ(n).toWorld(sampleCosineHemisphere(u1, u2)), m.albedo, false};
-        return true;
     case MaterialKind::Glossy: {
-        Vec3f wi = u0 < glossyLobeChance(m) ? Frame::fromZ(reflect(wo, n)).toWorld(samplePhongLobe(u1, u2, m.exponent))
-                                            : Frame::fromZ(n).toWorld(sampleCosineHemisphere(u1, u2));
+        // A glossy material picks its Phong lobe about the mirror direction or, as a Lambertian one
+        // does, the cosine lobe about n: one copy of the frame and the cosine sampler for both.
+        const bool phong = m.kind == MaterialKind::Glossy && u0 < glossyLobeChance(m);
+        const Vec3f wi = Frame::fromZ(phong ? reflect(wo, n) : n)
+                             .toWorld(phong ? samplePhongLobe(u1, u2, m.exponent) : sampleCosineHemisphere(u1, u2));
+        if (m.kind == MaterialKind::Lambertian) {
+            s = {wi, m.albedo, false};   // cosine sampling makes f * cos / pdf equal to the albedo
+            return true;
+        }
         float pdf = bsdfPdf(m, wo, wi, n);
         if (!(pdf > 0.0f)) return false;
         s = {wi, evalBsdfCos(m, wo, wi, n) * approxDivide(1.0f, pdf), false};
