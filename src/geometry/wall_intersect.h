@@ -176,10 +176,19 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect
             found = true;
         }
     }
-    WallPart inner = parapetInnerFace(wall);
-    inner.lo.x = fmaxf(inner.lo.x, uLo);
-    inner.hi.x = fminf(inner.hi.x, uHi);
-    return intersectWallPart(inner, r, tmax, hit) || found;
+    // The inner face (the twin's quad: parapetInnerFace) as a point on the plane w = -thickness: a
+    // second copy of intersectWallPart would cost the GPU's instruction cache more (docs/gpu_notes.md).
+    if (r.d.z != 0.0f) {
+        const float t = (-wall.parapetThickness - r.o.z) * r.invD.z;
+        const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
+        if (t > r.tmin && t < tmax && u >= fmaxf(uLo, wall.parapetInner0) - e && u <= fminf(uHi, wall.parapetInner1) + e &&
+            v >= wall.height - wall.parapetHeight - e && v <= wall.height + e) {
+            tmax = t;
+            hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
+            return true;
+        }
+    }
+    return found;
 }
 
 /// The closest (AnyHit = false) or any (AnyHit = true) hit of `ray` on `wall` (on its tile: see
