@@ -110,7 +110,8 @@ URBIS_HD inline bool warpAll(bool wants) {
 #endif
 }
 
-/// Sorts four keys in ascending order (a network of five compare-exchanges: no branches).
+/// Sorts four keys in ascending order (a network of five compare-exchanges: no branches; the GPU's
+/// traversal orders a node's children with it).
 URBIS_HD inline void sortFour(uint32_t (&k)[4]) {
     auto exchange = [&](int a, int b) {
         const uint32_t lo = k[a] < k[b] ? k[a] : k[b], hi = k[a] < k[b] ? k[b] : k[a];
@@ -133,17 +134,20 @@ URBIS_HD inline void sortFour(uint32_t (&k)[4]) {
 /// stack. `anyHit` is a run-time flag so that one inlined copy can serve both queries where code
 /// size matters (the GPU path tracer: see traceScene).
 ///
-/// With DeferCostly, leaves marked kBvhCostlyLeaf go to intersectCostly instead, deferred: a lane
-/// holds one such leaf and goes on with the traversal (or, with nothing else to do, waits) until
-/// every lane of its warp that is traversing holds one (warpAll), so that the costly test runs
-/// with all of them (docs/gpu_notes.md, eighth session). The order of tests then depends on the warp, so
-/// equal distances go to the lower primitive index: the CPU and the GPU find the same hit.
+/// With DeferCostly, leaves marked kBvhCostlyLeaf go to intersectCostly instead. On the GPU they are
+/// deferred: a lane holds one such leaf and goes on with the traversal (or, with nothing else to
+/// do, waits) until every lane of its warp that is traversing holds one (warpAll), so that the
+/// costly test runs with all of them (docs/gpu_notes.md, eighth session); the CPU tests them where
+/// it meets them. The order of tests then differs, so equal distances go to the lower primitive
+/// index: the CPU and the GPU find the same hit.
 template <bool DeferCostly, typename IntersectPrim, typename IntersectCostly>
 URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect,
                           IntersectCostly&& intersectCostly) {
     // A deferred leaf (one primitive: see buildBvh) on the stack or pending: its slot, with kLeafItem set.
     constexpr uint32_t kNoItem = 0xffffffffu, kLeafItem = 0x80000000u;
     constexpr uint32_t kLaneBits = kBvhWidth - 1;
+    // Deferring pays on the GPU only, where a warp's lanes wait for each other.
+    constexpr bool kDefer = DeferCostly && URBIS_GPU_CODE;
     const BvhRay r(ray);
     struct Entry {
         uint32_t item;
@@ -172,7 +176,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
         while (top > 0) {
             const Entry e = stack[--top];
             if (e.tEntry > ray.tmax) continue;
-            if (DeferCostly && (e.item & kLeafItem)) {
+            if (kDefer && (e.item & kLeafItem)) {
                 if (pending != kNoItem) {
                     ++top;   // one deferred leaf at a time
                     return false;
@@ -187,7 +191,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
         return false;
     };
     for (;;) {
-        if constexpr (DeferCostly) {
+        if constexpr (kDefer) {
             if (warpAll(pending != kNoItem)) {
                 // A hit found since the leaf was deferred may have put it out of reach.
                 if (pendingEntry <= ray.tmax && test(intersectCostly, pending & ~kLeafItem)) {
@@ -197,7 +201,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
                 pending = kNoItem;
             }
         }
-        if (DeferCostly && current == kNoItem && !popNext()) {
+        if (kDefer && current == kNoItem && !popNext()) {
             if (pending == kNoItem) return found;
             continue;   // nothing to do but the deferred leaf: wait for the warp
         }
@@ -210,29 +214,28 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
 #endif
         for (int l = 0; l < kBvhWidth; ++l) {
             if (!(hitMask >> l & 1u) || node.primCount[l] == 0) continue;
-            if (DeferCostly && node.costlyLeaf(l)) {
+            if (kDefer && node.costlyLeaf(l)) {
                 costly |= 1u << l;
                 continue;
             }
+            const bool costlyNow = !kDefer && DeferCostly && node.costlyLeaf(l);
             for (uint32_t i = 0; i < node.leafSize(l); ++i) {
-                if (test(intersect, node.child[l] + i)) {
+                if (costlyNow ? test(intersectCostly, node.child[l] + i) : test(intersect, node.child[l] + i)) {
                     found = true;
                     if (anyHit) return true;
                 }
             }
         }
         // Interior children (and deferred leaves) still in reach, visited nearest first: the nearest
-        // interior child next if nothing deferred is nearer, the others pushed farthest first. Each
-        // one's place is its rank among them (ties by lane, as a stable sort would order them),
-        // written straight to the stack: no sorted copy in the GPU's local memory (docs/gpu_notes.md,
-        // fifth session). The nearest deferred leaf is held at once if no other is.
+        // interior child next if nothing deferred is nearer, the others pushed farthest first. The
+        // nearest deferred leaf is held at once if no other is.
         unsigned inner = 0;
         for (int l = 0; l < kBvhWidth; ++l) {
             const bool inReach = hitMask >> l & 1u && tEntry[l] <= ray.tmax;
             inner |= (inReach && node.primCount[l] == 0 ? 1u : 0u) << l;
             costly &= ~((inReach ? 0u : 1u) << l);
         }
-        if (DeferCostly && costly != 0 && pending == kNoItem) {
+        if (kDefer && costly != 0 && pending == kNoItem) {
             int nearest = -1;
             for (int l = 0; l < kBvhWidth; ++l)
                 if (costly >> l & 1u && (nearest < 0 || tEntry[l] < tEntry[nearest])) nearest = l;
@@ -240,19 +243,23 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
             pendingEntry = tEntry[nearest];
             costly &= ~(1u << nearest);
         }
+        // Ordered by keys of (entry distance, lane): a non-negative float's bits order as the float,
+        // the lane takes the two lowest (and the stored distance loses them: it only culls, so a few
+        // ulps less is safe).
         static_assert(kBvhWidth == 4, "sortFour and childAt take four lanes");
-        // The queued lanes sorted by entry distance: keys of the distance's bits (non-negative floats
-        // order as their bits) with the lane in the two lowest, by a sorting network of five exchanges.
         const unsigned queued = inner | costly;
         uint32_t key[kBvhWidth];
         for (int l = 0; l < kBvhWidth; ++l)
             key[l] = queued >> l & 1u ? (__builtin_bit_cast(uint32_t, tEntry[l]) & ~kLaneBits) | uint32_t(l) : ~0u;
+        current = kNoItem;
+#if URBIS_GPU_CODE
+        // A sorting network, then the keys pushed in order; a lane's child by selects from the four
+        // loaded at once (indexing the node in memory by a sorted lane would put a load's latency
+        // between this node and the next). 3-7 % faster on the H200 than ranks (docs/gpu_notes.md,
+        // eighth session).
         sortFour(key);
-        // A lane's child by selects from the four loaded at once: indexing the node in memory by a
-        // sorted lane would put a load's latency between this node and the next.
         const uint32_t c0 = node.child[0], c1 = node.child[1], c2 = node.child[2], c3 = node.child[3];
         auto childAt = [&](uint32_t lane) { return lane & 2u ? (lane & 1u ? c3 : c2) : (lane & 1u ? c1 : c0); };
-        current = kNoItem;
         for (int i = kBvhWidth - 1; i >= 0; --i) {
             if (key[i] == ~0u) continue;
             const uint32_t lane = key[i] & kLaneBits;
@@ -260,7 +267,24 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
             if (i == 0 && interior) current = childAt(lane);
             else stack[top++] = {childAt(lane) | (interior ? 0u : kLeafItem), __builtin_bit_cast(float, key[i] & ~kLaneBits)};
         }
-        if (!DeferCostly && current == kNoItem && !popNext()) return found;
+#else
+        // Each lane's place is its rank among the keys, written straight to the stack: the same
+        // entries in the same places as the GPU's network, 7 % faster on the CPU (one thread,
+        // docs/gpu_notes.md, eighth session).
+        int count = 0;
+        for (int l = 0; l < kBvhWidth; ++l) count += int(queued >> l & 1u);
+        for (int l = 0; l < kBvhWidth; ++l) {
+            if (!(queued >> l & 1u)) continue;
+            int rank = 0;
+            for (int m = 0; m < kBvhWidth; ++m) rank += int(key[m] < key[l]);
+            const bool interior = inner >> l & 1u;
+            if (rank == 0 && interior) current = node.child[l];
+            else stack[top + count - 1 - rank] = {node.child[l] | (interior ? 0u : kLeafItem),
+                                                  __builtin_bit_cast(float, key[l] & ~kLaneBits)};
+        }
+        top += count - (current != kNoItem ? 1 : 0);
+#endif
+        if (!kDefer && current == kNoItem && !popNext()) return found;
     }
 }
 
