@@ -17,16 +17,16 @@ namespace {
 constexpr int kTileX = 8, kTileY = 16;   // 128 threads; each warp covers 8 x 4 pixels
 constexpr int kTraceBlock = 128;
 
-// Blocks per SM that each render kernel is compiled for: five hold it to 96 registers, four to 128. Left
-// free, ptxas took 158 for the inlined wall part tests: three blocks per SM, and frames of stored triangles
-// 25 % slower. Stored triangles run fastest at five (14 % slower at four), walls whose tests are deferred
-// per warp at four (1-3 % faster than at five, 8 % slower at three; docs/gpu_notes.md).
-constexpr int renderBlocksPerSm(SceneLayout layout) { return layout == SceneLayout::Mixed ? 4 : 5; }
+// Five blocks per SM hold the render kernels to 96 registers. Left free, ptxas took 158 for the inlined
+// wall part tests: three blocks per SM, and frames of stored triangles 25 % slower. At four blocks (128
+// registers) stored triangles ran 14 % slower; the walls' kernel, once its code shrank to 3,232
+// instructions, 0-9 % slower than at five (docs/gpu_notes.md, eighth session).
+constexpr int kRenderBlocksPerSm = 5;
 
 /// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU.
 /// One kernel per scene layout, so that each holds only the traversal it runs.
 template <SceneLayout Layout>
-__global__ void __launch_bounds__(kTileX * kTileY, renderBlocksPerSm(Layout))
+__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm)
     renderKernel(SceneView scene, Camera camera, RenderSettings settings, Vec3f* film, unsigned long long* rayCount) {
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
