@@ -134,20 +134,20 @@ URBIS_HD inline void sortFour(uint32_t (&k)[4]) {
 /// stack. `anyHit` is a run-time flag so that one inlined copy can serve both queries where code
 /// size matters (the GPU path tracer: see traceScene).
 ///
-/// With DeferCostly, leaves marked kBvhCostlyLeaf go to intersectCostly instead. On the GPU they are
+/// With CostlyLeaves, leaves marked kBvhCostlyLeaf go to intersectCostly instead. On the GPU they are
 /// deferred: a lane holds one such leaf and goes on with the traversal (or, with nothing else to
 /// do, waits) until every lane of its warp that is traversing holds one (warpAll), so that the
 /// costly test runs with all of them (docs/gpu_notes.md, eighth session); the CPU tests them where
 /// it meets them. The order of tests then differs, so equal distances go to the lower primitive
 /// index: the CPU and the GPU find the same hit.
-template <bool DeferCostly, typename IntersectPrim, typename IntersectCostly>
+template <bool CostlyLeaves, typename IntersectPrim, typename IntersectCostly>
 URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect,
                           IntersectCostly&& intersectCostly) {
     // A deferred leaf (one primitive: see buildBvh) on the stack or pending: its slot, with kLeafItem set.
     constexpr uint32_t kNoItem = 0xffffffffu, kLeafItem = 0x80000000u;
     constexpr uint32_t kLaneBits = kBvhWidth - 1;
     // Deferring pays on the GPU only, where a warp's lanes wait for each other.
-    constexpr bool kDefer = DeferCostly && URBIS_GPU_CODE;
+    constexpr bool kDefer = CostlyLeaves && URBIS_GPU_CODE;
     const BvhRay r(ray);
     struct Entry {
         uint32_t item;
@@ -159,7 +159,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
     uint32_t hitSlot = kNoItem, current = 0, pending = kNoItem;
     float pendingEntry = 0.0f;   // where the ray enters the pending leaf's box
     auto test = [&](auto& intersectPrim, uint32_t slot) {
-        if (!DeferCostly) return intersectPrim(slot, ray, hit);
+        if (!CostlyLeaves) return intersectPrim(slot, ray, hit);
         const float tmax = ray.tmax;
         // A tie goes to the lower slot: it may test up to the next float (tmax is positive and finite).
         if (found && slot < hitSlot) ray.tmax = __builtin_bit_cast(float, __builtin_bit_cast(uint32_t, tmax) + 1u);
@@ -210,7 +210,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
         const unsigned hitMask = intersectLanes(node, r, ray.tmin, ray.tmax, tEntry);
         unsigned costly = 0;
 #if URBIS_GPU_CODE
-#pragma unroll(DeferCostly ? 1 : kBvhWidth)   // one copy of the primitive test beside the deferred one
+#pragma unroll(CostlyLeaves ? 1 : kBvhWidth)   // one copy of the primitive test beside the deferred one
 #endif
         for (int l = 0; l < kBvhWidth; ++l) {
             if (!(hitMask >> l & 1u) || node.primCount[l] == 0) continue;
@@ -218,7 +218,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
                 costly |= 1u << l;
                 continue;
             }
-            const bool costlyNow = !kDefer && DeferCostly && node.costlyLeaf(l);
+            const bool costlyNow = !kDefer && CostlyLeaves && node.costlyLeaf(l);
             for (uint32_t i = 0; i < node.leafSize(l); ++i) {
                 if (costlyNow ? test(intersectCostly, node.child[l] + i) : test(intersect, node.child[l] + i)) {
                     found = true;
@@ -288,7 +288,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
     }
 }
 
-/// traverseBvh without deferred leaves: every primitive goes to `intersect`.
+/// traverseBvh without costly leaves: every primitive goes to `intersect`.
 template <typename IntersectPrim>
 URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect) {
     return traverseBvh<false>(nodes, ray, hit, anyHit, intersect, intersect);
