@@ -134,20 +134,22 @@ URBIS_HD inline void sortFour(uint32_t (&k)[4]) {
 /// stack. `anyHit` is a run-time flag so that one inlined copy can serve both queries where code
 /// size matters (the GPU path tracer: see traceScene).
 ///
-/// With CostlyLeaves, leaves marked kBvhCostlyLeaf go to intersectCostly instead. On the GPU they are
-/// deferred: a lane holds one such leaf and goes on with the traversal (or, with nothing else to
-/// do, waits) until every lane of its warp that is traversing holds one (warpAll), so that the
-/// costly test runs with all of them (docs/gpu_notes.md, eighth session); the CPU tests them where
-/// it meets them. The order of tests then differs, so equal distances go to the lower primitive
-/// index: the CPU and the GPU find the same hit.
-template <bool CostlyLeaves, typename IntersectPrim, typename IntersectCostly>
+/// With CostlyLeaves, leaves marked kBvhCostlyLeaf go to intersectCostly instead. With Defer (by
+/// default on the GPU only, where it pays) they are deferred: a lane holds one such leaf and goes on
+/// with the traversal (or, with nothing else to do, waits) until every lane of its warp that is
+/// traversing holds one (warpAll), so that the costly test runs with all of them (docs/gpu_notes.md,
+/// eighth session); without, they are tested where the traversal meets them. The order of tests
+/// then differs, so equal distances go to the lower primitive index: the CPU and the GPU find the
+/// same hit. The CPU's tests run the deferred traversal too, each ray its own warp.
+template <bool CostlyLeaves, bool Defer = CostlyLeaves && URBIS_GPU_CODE, typename IntersectPrim,
+          typename IntersectCostly>
 URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect,
                           IntersectCostly&& intersectCostly) {
     // A deferred leaf (one primitive: see buildBvh) on the stack or pending: its slot, with kLeafItem set.
     constexpr uint32_t kNoItem = 0xffffffffu, kLeafItem = 0x80000000u;
     constexpr uint32_t kLaneBits = kBvhWidth - 1;
-    // Deferring pays on the GPU only, where a warp's lanes wait for each other.
-    constexpr bool kDefer = CostlyLeaves && URBIS_GPU_CODE;
+    static_assert(CostlyLeaves || !Defer, "only costly leaves are deferred");
+    constexpr bool kDefer = Defer;
     const BvhRay r(ray);
     struct Entry {
         uint32_t item;

@@ -37,7 +37,9 @@ URBIS_HD inline SurfaceHit groundSurface(const SceneView& scene, float t) {
 
 /// Closest hit (or with anyHit the first found) over a BVH whose leaves mix kinds
 /// (scene.primRefs): triangles are tested where the traversal meets them, walls (each alone in a
-/// leaf marked kBvhCostlyLeaf) when enough of a GPU warp's lanes hold one (traverseBvh).
+/// leaf marked kBvhCostlyLeaf) there too or, with Defer (the GPU's default), when every traversing
+/// lane of the warp holds one (traverseBvh). Both find the same hit.
+template <bool Defer = URBIS_GPU_CODE>
 URBIS_HD inline SurfaceHit traceMixed(const SceneView& scene, Ray& ray, bool anyHit) {
     const WatertightRay wr(ray);
     Hit hit;
@@ -59,7 +61,7 @@ URBIS_HD inline SurfaceHit traceMixed(const SceneView& scene, Ray& ray, bool any
         r.tmax = w.t;
         return true;
     };
-    traverseBvh<true>(scene.geometry.nodes, ray, hit, anyHit, testTriangle, testWall);
+    traverseBvh<true, Defer>(scene.geometry.nodes, ray, hit, anyHit, testTriangle, testWall);
     if (!hit.valid()) return {};
     const uint32_t index = primRefIndex(hit.prim);
     if (primRefKind(hit.prim) == PrimKind::Triangle) return triangleSurface(scene, index, hit.t);
