@@ -1,11 +1,12 @@
 // Shading math for per-ray code (host+device): sin, cos, pow, quotients, square roots and unit
-// vectors of sampled directions, pdfs and weights. On the GPU they are the hardware's
-// approximations: the library's exact routines handle arguments that never occur here (huge
-// angles, negative bases, denormal quotients) with code that made the render kernel larger, and its
-// size is what limits it (docs/gpu_notes.md, fourth and eighth sessions). The CPU keeps the exact
-// routines, so its images do not change; the GPU's agree with them within
-// tests/gpu_render_test.cpp's tolerance. Hits stay exact on both (traversal and intersection do not
-// use these), so the GPU's traversal matches the CPU's bit for bit.
+// vectors of camera rays, sampled directions, normals, pdfs and weights. On the GPU they are the
+// hardware's approximations: the library's exact routines handle arguments that never occur here
+// (huge angles, negative bases, denormal quotients) with code that made the render kernel larger,
+// and its size is what limits it (docs/gpu_notes.md, fourth and eighth sessions). The CPU keeps the
+// exact routines, so its images do not change. Traversal and intersection do not use these: a
+// given ray hits the same primitive at the same distance on both (tests/gpu_traversal_test.cpp);
+// the rays a path makes differ by a few ulps, so the GPU's images agree with the CPU's within
+// tests/gpu_render_test.cpp's tolerance.
 #pragma once
 
 #include "math/vec.h"
