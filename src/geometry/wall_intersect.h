@@ -34,6 +34,16 @@ struct WallRay {
         d = {dot(ray.dir, wall.axisU), ray.dir.y, dot(ray.dir, wall.normal)};
         invD = {BvhRay::safeInverse(d.x), BvhRay::safeInverse(d.y), BvhRay::safeInverse(d.z)};
     }
+
+    /// Whether the ray meets the plane w = w0 at tmin < t < tmax: then t and the point's u, v there.
+    URBIS_HD bool crossesW(float w0, float tmax, float& t, float& u, float& v) const {
+        if (d.z == 0.0f) return false;
+        t = (w0 - o.z) * invD.z;
+        if (!(t > tmin && t < tmax)) return false;
+        u = o.x + t * d.x;
+        v = o.y + t * d.y;
+        return true;
+    }
 };
 
 /// The part of a ray's segment (t0, t1) inside slabs of wall coordinates, clipped one axis at a time.
@@ -137,10 +147,8 @@ URBIS_HD inline bool intersectWallPart(const WallPart& p, const WallRay& r, floa
 URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const TileRect& tile, const WallRay& r, float& tmax,
                                           WallHit& hit) {
     constexpr float e = kWallPartPadding;
-    if (r.d.z == 0.0f) return false;
-    const float t = -r.o.z * r.invD.z;
-    if (!(t > r.tmin && t < tmax)) return false;
-    const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
+    float t, u, v;
+    if (!r.crossesW(0.0f, tmax, t, u, v)) return false;
     if (u < tile.u0 - e || u > tile.u1 + e || v < tile.v0 - e || v > tile.v1 + e) return false;
     const bool inGrid = u > wall.gridU + e && u < wall.gridU + wall.gridWidth() - e && v > wall.gridV + e &&
                         v < wall.gridV + wall.gridHeight() - e;
@@ -178,15 +186,12 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect
     }
     // The inner face (the twin's quad: parapetInnerFace) as a point on the plane w = -thickness: a
     // second copy of intersectWallPart would cost the GPU's instruction cache more (docs/gpu_notes.md).
-    if (r.d.z != 0.0f) {
-        const float t = (-wall.parapetThickness - r.o.z) * r.invD.z;
-        const float u = r.o.x + t * r.d.x, v = r.o.y + t * r.d.y;
-        if (t > r.tmin && t < tmax && u >= fmaxf(uLo, wall.parapetInner0) - e && u <= fminf(uHi, wall.parapetInner1) + e &&
-            v >= wall.height - wall.parapetHeight - e && v <= wall.height + e) {
-            tmax = t;
-            hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
-            return true;
-        }
+    float t, u, v;
+    if (r.crossesW(-wall.parapetThickness, tmax, t, u, v) && u >= fmaxf(uLo, wall.parapetInner0) - e &&
+        u <= fminf(uHi, wall.parapetInner1) + e && v >= wall.height - wall.parapetHeight - e && v <= wall.height + e) {
+        tmax = t;
+        hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
+        return true;
     }
     return found;
 }
