@@ -7,7 +7,8 @@
 # (sf_downtown_2023.osm.pbf, the Bavarian village).
 # Usage: bench/gpu.sh [steps], steps a comma list of build,test,bench,cpu (default all) and profile
 # (not by default: Nsight Compute on one render kernel launch of each representation, generated city
-# at 40 m, joined with the kernel's line table by bench/sass_lines.py; build with -lineinfo for it).
+# at 40 m, or at URBIS_PROFILE_HEIGHT metres, joined with the kernel's line table by bench/sass_lines.py;
+# build with -lineinfo for it).
 # Environment: URBIS_BUILD_DIR (build), URBIS_CUDA_FMAD (OFF), URBIS_CUDA_FLAGS (extra nvcc flags, e.g.
 # -lineinfo for Nsight Compute's source view), URBIS_TAG (suffix of the JSON names), JOBS.
 # Building there takes minutes of device time; binaries built here run there as they are. So
@@ -92,7 +93,8 @@ if [[ $STEPS == *,cpu,* ]]; then
 fi
 
 if [[ $STEPS == *,profile,* ]]; then
-  say "profile: render kernel, generated city at 40 m, 1280x720, 4 spp"
+  HEIGHT=${URBIS_PROFILE_HEIGHT:-40}
+  say "profile: render kernel, generated city at $HEIGHT m, 1280x720, 4 spp"
   CUBINS=$OUT/cubins
   mkdir -p "$CUBINS"
   BIN=$(realpath "$BUILD/urbis")
@@ -102,7 +104,7 @@ if [[ $STEPS == *,profile,* ]]; then
   for geometry in procedural triangles; do
     ncu --kernel-name regex:renderKernel --launch-count 1 --section SourceCounters --section WarpStateStats \
         --import-source yes -f -o "$OUT/profile_$geometry" "$BUILD"/urbis render --buildings 3000 --seed 7 \
-        --building-height-range 10:30 --camera -300,40,300,0,20,0 --height-scale 3.3058 --width 1280 --height 720 \
+        --building-height-range 10:30 --camera -300,40,300,0,20,0 --height-scale "$(python3 -c "print($HEIGHT / 12.1)")" --width 1280 --height 720 \
         --spp 4 --device cuda --geometry $geometry --out "$OUT/profile_$geometry.png" >/dev/null 2>&1 || status=1
     ncu --import "$OUT/profile_$geometry.ncu-rep" --page source --csv --print-source sass |
         gzip > "$OUT/profile_$geometry.csv.gz"

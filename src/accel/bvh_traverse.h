@@ -210,19 +210,32 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
         const BvhNode& node = nodes[current];
         float tEntry[kBvhWidth];
         const unsigned hitMask = intersectLanes(node, r, ray.tmin, ray.tmax, tEntry);
-        unsigned costly = 0;
+        // The node's children and leaf sizes, read at once and picked by selects: a loop that is not
+        // unrolled would read them from memory lane by lane, each load's latency on the way
+        // (docs/gpu_notes.md, ninth session).
+        static_assert(kBvhWidth == 4, "at, sortFour and the lists below take four lanes");
+        const uint32_t child[kBvhWidth] = {node.child[0], node.child[1], node.child[2], node.child[3]};
+        const uint32_t count[kBvhWidth] = {node.primCount[0], node.primCount[1], node.primCount[2], node.primCount[3]};
+        auto at = [](const uint32_t(&value)[kBvhWidth], uint32_t lane) {
+            return lane & 2u ? (lane & 1u ? value[3] : value[2]) : (lane & 1u ? value[1] : value[0]);
+        };
+        unsigned leaves = 0, costly = 0;
+        for (int l = 0; l < kBvhWidth; ++l) {
+            leaves |= (count[l] != 0 ? 1u : 0u) << l;
+            costly |= (count[l] & kBvhCostlyLeaf ? 1u : 0u) << l;
+        }
+        leaves &= hitMask;
+        costly = kDefer ? costly & leaves : 0u;
+        leaves &= ~costly;
 #if URBIS_GPU_CODE
 #pragma unroll(CostlyLeaves ? 1 : kBvhWidth)   // one copy of the primitive test beside the deferred one
 #endif
         for (int l = 0; l < kBvhWidth; ++l) {
-            if (!(hitMask >> l & 1u) || node.primCount[l] == 0) continue;
-            if (kDefer && node.costlyLeaf(l)) {
-                costly |= 1u << l;
-                continue;
-            }
-            const bool costlyNow = !kDefer && CostlyLeaves && node.costlyLeaf(l);
-            for (uint32_t i = 0; i < node.leafSize(l); ++i) {
-                if (costlyNow ? test(intersectCostly, node.child[l] + i) : test(intersect, node.child[l] + i)) {
+            if (!(leaves >> l & 1u)) continue;
+            const uint32_t first = at(child, uint32_t(l)), size = at(count, uint32_t(l));
+            const bool costlyNow = !kDefer && CostlyLeaves && (size & kBvhCostlyLeaf);
+            for (uint32_t i = 0; i < (size & ~kBvhCostlyLeaf); ++i) {
+                if (costlyNow ? test(intersectCostly, first + i) : test(intersect, first + i)) {
                     found = true;
                     if (anyHit) return true;
                 }
@@ -234,57 +247,52 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
         unsigned inner = 0;
         for (int l = 0; l < kBvhWidth; ++l) {
             const bool inReach = hitMask >> l & 1u && tEntry[l] <= ray.tmax;
-            inner |= (inReach && node.primCount[l] == 0 ? 1u : 0u) << l;
+            inner |= (inReach && count[l] == 0 ? 1u : 0u) << l;
             costly &= ~((inReach ? 0u : 1u) << l);
         }
         if (kDefer && costly != 0 && pending == kNoItem) {
             int nearest = -1;
             for (int l = 0; l < kBvhWidth; ++l)
                 if (costly >> l & 1u && (nearest < 0 || tEntry[l] < tEntry[nearest])) nearest = l;
-            pending = kLeafItem | node.child[nearest];
+            pending = kLeafItem | at(child, uint32_t(nearest));
             pendingEntry = tEntry[nearest];
             costly &= ~(1u << nearest);
         }
         // Ordered by keys of (entry distance, lane): a non-negative float's bits order as the float,
         // the lane takes the two lowest (and the stored distance loses them: it only culls, so a few
         // ulps less is safe).
-        static_assert(kBvhWidth == 4, "sortFour and childAt take four lanes");
         const unsigned queued = inner | costly;
         uint32_t key[kBvhWidth];
         for (int l = 0; l < kBvhWidth; ++l)
             key[l] = queued >> l & 1u ? (__builtin_bit_cast(uint32_t, tEntry[l]) & ~kLaneBits) | uint32_t(l) : ~0u;
         current = kNoItem;
 #if URBIS_GPU_CODE
-        // A sorting network, then the keys pushed in order; a lane's child by selects from the four
-        // loaded at once (indexing the node in memory by a sorted lane would put a load's latency
-        // between this node and the next). 3-7 % faster on the H200 than ranks (docs/gpu_notes.md,
-        // eighth session).
+        // A sorting network, then the keys pushed in order; a lane's child by selects (`at`). 3-7 %
+        // faster on the H200 than ranks (docs/gpu_notes.md, eighth session).
         sortFour(key);
-        const uint32_t c0 = node.child[0], c1 = node.child[1], c2 = node.child[2], c3 = node.child[3];
-        auto childAt = [&](uint32_t lane) { return lane & 2u ? (lane & 1u ? c3 : c2) : (lane & 1u ? c1 : c0); };
         for (int i = kBvhWidth - 1; i >= 0; --i) {
             if (key[i] == ~0u) continue;
             const uint32_t lane = key[i] & kLaneBits;
             const bool interior = inner >> lane & 1u;
-            if (i == 0 && interior) current = childAt(lane);
-            else stack[top++] = {childAt(lane) | (interior ? 0u : kLeafItem), __builtin_bit_cast(float, key[i] & ~kLaneBits)};
+            if (i == 0 && interior) current = at(child, lane);
+            else stack[top++] = {at(child, lane) | (interior ? 0u : kLeafItem), __builtin_bit_cast(float, key[i] & ~kLaneBits)};
         }
 #else
         // Each lane's place is its rank among the keys, written straight to the stack: the same
         // entries in the same places as the GPU's network, 7 % faster on the CPU (one thread,
         // docs/gpu_notes.md, eighth session).
-        int count = 0;
-        for (int l = 0; l < kBvhWidth; ++l) count += int(queued >> l & 1u);
+        int queuedCount = 0;
+        for (int l = 0; l < kBvhWidth; ++l) queuedCount += int(queued >> l & 1u);
         for (int l = 0; l < kBvhWidth; ++l) {
             if (!(queued >> l & 1u)) continue;
             int rank = 0;
             for (int m = 0; m < kBvhWidth; ++m) rank += int(key[m] < key[l]);
             const bool interior = inner >> l & 1u;
-            if (rank == 0 && interior) current = node.child[l];
-            else stack[top + count - 1 - rank] = {node.child[l] | (interior ? 0u : kLeafItem),
+            if (rank == 0 && interior) current = child[l];
+            else stack[top + queuedCount - 1 - rank] = {child[l] | (interior ? 0u : kLeafItem),
                                                   __builtin_bit_cast(float, key[l] & ~kLaneBits)};
         }
-        top += count - (current != kNoItem ? 1 : 0);
+        top += queuedCount - (current != kNoItem ? 1 : 0);
 #endif
         if (!kDefer && current == kNoItem && !popNext()) return found;
     }

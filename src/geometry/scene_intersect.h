@@ -93,7 +93,7 @@ URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyH
     }
     if (anyHit) return out;
     if (tGround > 0.0f && !(out.valid() && out.t <= tGround)) out = groundSurface(scene, tGround);
-    if (out.valid() && dot(out.normal, ray.dir) > 0.0f) out.normal = -out.normal;
+    if (out.valid() && fusedDot(out.normal, ray.dir) > 0.0f) out.normal = -out.normal;
     // -0 + 0 is +0: signed zeros differ between a wall's exact axes and its twin's cross products, and
     // the shading frame (Frame::fromZ) branches on the sign of z, so both would sample differently.
     out.normal = out.normal + Vec3f{0.0f, 0.0f, 0.0f};

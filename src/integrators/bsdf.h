@@ -10,7 +10,7 @@
 namespace urbis {
 
 /// Mirror reflection of `wo` about `n`.
-URBIS_HD inline Vec3f reflect(Vec3f wo, Vec3f n) { return n * (2.0f * dot(wo, n)) - wo; }
+URBIS_HD inline Vec3f reflect(Vec3f wo, Vec3f n) { return fusedMulAdd(n, 2.0f * fusedDot(wo, n), -wo); }
 
 /// Whether the material scatters only into single directions: light sampling cannot reach it.
 URBIS_HD inline bool isSpecular(const Material& m) { return m.kind == MaterialKind::Mirror || m.kind == MaterialKind::Glass; }
@@ -23,23 +23,23 @@ URBIS_HD inline float glossyLobeChance(const Material& m) {
 
 /// f(wo, wi) * cos(wi, n) of a non-specular material; zero below the surface.
 URBIS_HD inline Vec3f evalBsdfCos(const Material& m, Vec3f wo, Vec3f wi, Vec3f n) {
-    float cosine = dot(wi, n);
+    float cosine = fusedDot(wi, n);
     if (cosine <= 0.0f || isSpecular(m)) return {};
     Vec3f f = m.albedo * (1.0f / kPi);
     if (m.kind == MaterialKind::Glossy) {
-        float c = fmaxf(0.0f, dot(wi, reflect(wo, n)));
-        f += m.specular * (approxDivide(m.exponent + 2.0f, 2.0f * kPi) * powPositive(c, m.exponent));
+        float c = fmaxf(0.0f, fusedDot(wi, reflect(wo, n)));
+        f = fusedMulAdd(m.specular, approxDivide(m.exponent + 2.0f, 2.0f * kPi) * powPositive(c, m.exponent), f);
     }
     return f * cosine;
 }
 
 /// The solid-angle pdf with which sampleBsdf picks `wi` for a non-specular material.
 URBIS_HD inline float bsdfPdf(const Material& m, Vec3f wo, Vec3f wi, Vec3f n) {
-    float cosine = dot(wi, n);
+    float cosine = fusedDot(wi, n);
     if (cosine <= 0.0f || isSpecular(m)) return 0.0f;
     if (m.kind != MaterialKind::Glossy) return cosineHemispherePdf(cosine);
     float lobe = glossyLobeChance(m);
-    return (1.0f - lobe) * cosineHemispherePdf(cosine) + lobe * phongLobePdf(dot(wi, reflect(wo, n)), m.exponent);
+    return fusedMulAdd(lobe, phongLobePdf(fusedDot(wi, reflect(wo, n)), m.exponent), (1.0f - lobe) * cosineHemispherePdf(cosine));
 }
 
 struct BsdfSample {
@@ -60,8 +60,8 @@ URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, 
         // proportion, so each branch's weight is 1 (reflection) or the tint (transmission).
         float r0 = approxDivide(m.ior - 1.0f, m.ior + 1.0f);
         r0 *= r0;
-        float c = 1.0f - fminf(1.0f, fabsf(dot(wo, n)));
-        float fresnel = r0 + (1.0f - r0) * c * c * c * c * c;
+        float c = 1.0f - fminf(1.0f, fabsf(fusedDot(wo, n)));
+        float fresnel = fusedMulAdd((1.0f - r0) * c * c * c * c, c, r0);
         if (u0 < fresnel) s = {reflect(wo, n), Vec3f{1, 1, 1}, true};
         else s = {-wo, m.albedo, true};
         return true;

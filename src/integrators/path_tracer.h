@@ -21,8 +21,8 @@ struct PathSample {
 /// Offset from a surface point along its facing normal, scaled with the point's magnitude so that
 /// new rays clear the surface at city coordinates (thousands of metres) in float precision.
 URBIS_HD inline Vec3f offsetRayOrigin(Vec3f p, Vec3f facingNormal) {
-    float scale = 1e-4f + 4e-6f * maxComponent(Vec3f{fabsf(p.x), fabsf(p.y), fabsf(p.z)});
-    return p + facingNormal * scale;
+    const float scale = fusedMulAdd(4e-6f, maxComponent(Vec3f{fabsf(p.x), fabsf(p.y), fabsf(p.z)}), 1e-4f);
+    return fusedMulAdd(facingNormal, scale, p);
 }
 
 /// Traces the path of sample `sampleIndex` through pixel (px, py); pure function of its arguments.
@@ -53,17 +53,18 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             continue;
         }
         if (!hit.valid()) {
-            out.radiance += throughput * scene.sky.radiance(ray.dir);
+            out.radiance = fusedMulAdd(throughput, scene.sky.radiance(ray.dir), out.radiance);
             // Light sampling cannot reach the disk through a mirror or glass: count it here.
-            if (specularBounce && scene.sun.contains(approxNormalize(ray.dir))) out.radiance += throughput * scene.sun.radiance;
+            if (specularBounce && scene.sun.contains(approxNormalize(ray.dir)))
+                out.radiance = fusedMulAdd(throughput, scene.sun.radiance, out.radiance);
             break;
         }
         Vec3f normal = hit.normal;
         const Material& material = scene.materials[hit.material];
         // No emitter is light-sampled yet, so every hit counts its emission in full.
-        out.radiance += throughput * material.emission;
+        out.radiance = fusedMulAdd(throughput, material.emission, out.radiance);
         Vec3f wo = approxNormalize(-ray.dir);
-        Vec3f position = ray.origin + ray.dir * hit.t;
+        const Vec3f position = fusedMulAdd(ray.dir, hit.t, ray.origin);
 
         // Next-event estimation towards the sun's disk; the sky lookup never includes the disk.
         float u1 = rng.draw(), u2 = rng.draw();
@@ -98,7 +99,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             if (shadowPending) continue;
             break;
         }
-        ray = Ray{offsetRayOrigin(position, dot(bsdf.dir, normal) > 0.0f ? normal : -normal), bsdf.dir};
+        ray = Ray{offsetRayOrigin(position, fusedDot(bsdf.dir, normal) > 0.0f ? normal : -normal), bsdf.dir};
         ++depth;
     }
     return out;

@@ -18,7 +18,7 @@ struct Sky {
     URBIS_HD Vec3f radiance(Vec3f dir) const {
         if (dir.y < 0.0f) return ground;
         float w = powPositive(dir.y, exponent);
-        return horizon * (1.0f - w) + zenith * w;
+        return fusedMulAdd(zenith, w, horizon * (1.0f - w));
     }
     /// A sky of the same radiance in every direction.
     URBIS_HD static Sky uniform(Vec3f l) { return Sky{l, l, l, 1.0f}; }

@@ -18,7 +18,7 @@ struct Sun {
         return Frame::fromZ(direction).toWorld(sampleUniformCone(u1, u2, cosHalfAngle));
     }
     URBIS_HD float pdf() const { return uniformConePdf(cosHalfAngle); }
-    URBIS_HD bool contains(Vec3f unitDir) const { return dot(unitDir, direction) >= cosHalfAngle; }
+    URBIS_HD bool contains(Vec3f unitDir) const { return fusedDot(unitDir, direction) >= cosHalfAngle; }
 };
 
 /// A sun at elevation and azimuth (degrees; azimuth clockwise from north) whose disk of the given

@@ -14,10 +14,11 @@ struct Frame {
         float sign = copysignf(1.0f, n.z);
         float a = approxDivide(-1.0f, sign + n.z);
         float b = n.x * n.y * a;
-        return {Vec3f{1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x}, Vec3f{b, sign + n.y * n.y * a, -n.y}, n};
+        return {Vec3f{fusedMulAdd(sign * n.x * n.x, a, 1.0f), sign * b, -sign * n.x},
+                Vec3f{b, fusedMulAdd(n.y * n.y, a, sign), -n.y}, n};
     }
     /// Local (frame) coordinates to world.
-    URBIS_HD Vec3f toWorld(Vec3f v) const { return x * v.x + y * v.y + z * v.z; }
+    URBIS_HD Vec3f toWorld(Vec3f v) const { return fusedMulAdd(z, v.z, fusedMulAdd(y, v.y, x * v.x)); }
 };
 
 } // namespace urbis

@@ -59,10 +59,28 @@ URBIS_HD inline float approxSqrt(float x) {
 #endif
 }
 
+/// a * b + c; on the GPU one fused multiply-add, rounded once. The build keeps nvcc from fusing on its
+/// own (-fmad=false), so that hits match the CPU's; the shading math fuses here, by name, which made
+/// the walls' render kernel ~120 instructions smaller (docs/gpu_notes.md, ninth session).
+URBIS_HD inline float fusedMulAdd(float a, float b, float c) {
+#if defined(__CUDA_ARCH__)
+    return __fmaf_rn(a, b, c);
+#else
+    return a * b + c;
+#endif
+}
+URBIS_HD inline Vec3f fusedMulAdd(Vec3f a, Vec3f b, Vec3f c) {
+    return {fusedMulAdd(a.x, b.x, c.x), fusedMulAdd(a.y, b.y, c.y), fusedMulAdd(a.z, b.z, c.z)};
+}
+URBIS_HD inline Vec3f fusedMulAdd(Vec3f a, float b, Vec3f c) { return fusedMulAdd(a, Vec3f{b, b, b}, c); }
+
+/// dot(a, b) by fused multiply-adds; on the CPU the same sums as dot (x, then y, then z).
+URBIS_HD inline float fusedDot(Vec3f a, Vec3f b) { return fusedMulAdd(a.z, b.z, fusedMulAdd(a.y, b.y, a.x * b.x)); }
+
 /// v / |v|; on the GPU by the hardware's reciprocal square root.
 URBIS_HD inline Vec3f approxNormalize(Vec3f v) {
 #if defined(__CUDA_ARCH__)
-    return v * rsqrtf(dot(v, v));
+    return v * rsqrtf(fusedDot(v, v));
 #else
     return normalize(v);
 #endif

@@ -7,7 +7,7 @@ namespace urbis {
 
 /// Cosine-weighted direction about +z from two uniform numbers (Malley's method, concentric disk).
 URBIS_HD inline Vec3f sampleCosineHemisphere(float u1, float u2) {
-    float a = 2.0f * u1 - 1.0f, b = 2.0f * u2 - 1.0f;
+    float a = fusedMulAdd(2.0f, u1, -1.0f), b = fusedMulAdd(2.0f, u2, -1.0f);
     float r, phi;
     if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f, 1.0f};
     if (a * a > b * b) {
@@ -15,19 +15,19 @@ URBIS_HD inline Vec3f sampleCosineHemisphere(float u1, float u2) {
         phi = (kPi / 4.0f) * approxDivide(b, a);
     } else {
         r = b;
-        phi = kPi / 2.0f - (kPi / 4.0f) * approxDivide(a, b);
+        phi = fusedMulAdd(-kPi / 4.0f, approxDivide(a, b), kPi / 2.0f);
     }
     float s, c;
     sinCos(phi, s, c);
     float x = r * c, y = r * s;
-    return {x, y, approxSqrt(fmaxf(0.0f, 1.0f - x * x - y * y))};
+    return {x, y, approxSqrt(fmaxf(0.0f, fusedMulAdd(-y, y, fusedMulAdd(-x, x, 1.0f))))};
 }
 URBIS_HD inline float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? approxDivide(cosTheta, kPi) : 0.0f; }
 
 /// Uniform direction inside the cone of half-angle acos(cosMax) about +z.
 URBIS_HD inline Vec3f sampleUniformCone(float u1, float u2, float cosMax) {
-    float cosTheta = 1.0f - u1 * (1.0f - cosMax);
-    float sinTheta = approxSqrt(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
+    float cosTheta = fusedMulAdd(-u1, 1.0f - cosMax, 1.0f);
+    float sinTheta = approxSqrt(fmaxf(0.0f, fusedMulAdd(-cosTheta, cosTheta, 1.0f)));
     float s, c;
     sinCos(2.0f * kPi * u2, s, c);
     return {sinTheta * c, sinTheta * s, cosTheta};
@@ -37,7 +37,7 @@ URBIS_HD inline float uniformConePdf(float cosMax) { return approxDivide(1.0f, 2
 /// Direction about +z distributed as the normalised Phong lobe (n + 1) / (2 pi) cos^n(theta).
 URBIS_HD inline Vec3f samplePhongLobe(float u1, float u2, float exponent) {
     float cosTheta = powPositive(u1, approxDivide(1.0f, exponent + 1.0f));
-    float sinTheta = approxSqrt(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
+    float sinTheta = approxSqrt(fmaxf(0.0f, fusedMulAdd(-cosTheta, cosTheta, 1.0f)));
     float s, c;
     sinCos(2.0f * kPi * u2, s, c);
     return {sinTheta * c, sinTheta * s, cosTheta};

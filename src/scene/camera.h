@@ -16,11 +16,11 @@ struct Camera {
 
     /// The ray through film position (sx, sy) in [0,1)^2, sx to the right, sy downwards.
     URBIS_HD Ray generateRay(float sx, float sy) const {
-        float px = (2.0f * sx - 1.0f) * tanHalfFovY * aspect;
-        float py = (1.0f - 2.0f * sy) * tanHalfFovY;
+        float px = fusedMulAdd(2.0f, sx, -1.0f) * tanHalfFovY * aspect;
+        float py = fusedMulAdd(-2.0f, sy, 1.0f) * tanHalfFovY;
         Ray ray;
         ray.origin = position;
-        ray.dir = approxNormalize(forward + right * px + up * py);
+        ray.dir = approxNormalize(fusedMulAdd(up, py, fusedMulAdd(right, px, forward)));
         return ray;
     }
 };
