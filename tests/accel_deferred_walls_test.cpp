@@ -85,8 +85,10 @@ TEST(AccelDeferredWalls, TiesGoToTheLowerSlotDeferredOrNot) {
     for (bool anyHit : {false, true}) {
         Ray deferred{Vec3f{0.5f, 0.5f, -10.0f}, Vec3f{0, 0, 1}}, immediate = deferred;
         Hit d, i;
-        ASSERT_TRUE((traverseBvh<true, true>(bvh.nodes.data(), deferred, d, anyHit, atTenAndAHalf, atTenAndAHalf)));
-        ASSERT_TRUE((traverseBvh<true, false>(bvh.nodes.data(), immediate, i, anyHit, atTenAndAHalf, atTenAndAHalf)));
+        ASSERT_TRUE((traverseBvh<true, true>(bvh.nodes.data(), BvhRay(deferred), deferred, d, anyHit, atTenAndAHalf,
+                                             atTenAndAHalf)));
+        ASSERT_TRUE((traverseBvh<true, false>(bvh.nodes.data(), BvhRay(immediate), immediate, i, anyHit, atTenAndAHalf,
+                                              atTenAndAHalf)));
         if (!anyHit) {
             EXPECT_EQ(d.prim, 0u);
             EXPECT_EQ(i.prim, 0u);

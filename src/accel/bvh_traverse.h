@@ -143,14 +143,13 @@ URBIS_HD inline void sortFour(uint32_t (&k)[4]) {
 /// same hit. The CPU's tests run the deferred traversal too, each ray its own warp.
 template <bool CostlyLeaves, bool Defer = CostlyLeaves && URBIS_GPU_CODE, typename IntersectPrim,
           typename IntersectCostly>
-URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect,
-                          IntersectCostly&& intersectCostly) {
+URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, Hit& hit, bool anyHit,
+                          IntersectPrim&& intersect, IntersectCostly&& intersectCostly) {
     // A deferred leaf (one primitive: see buildBvh) on the stack or pending: its slot, with kLeafItem set.
     constexpr uint32_t kNoItem = 0xffffffffu, kLeafItem = 0x80000000u;
     constexpr uint32_t kLaneBits = kBvhWidth - 1;
     static_assert(CostlyLeaves || !Defer, "only costly leaves are deferred");
     constexpr bool kDefer = Defer;
-    const BvhRay r(ray);
     struct Entry {
         uint32_t item;
         float tEntry;
@@ -300,8 +299,9 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit,
 
 /// traverseBvh without costly leaves: every primitive goes to `intersect`.
 template <typename IntersectPrim>
-URBIS_HD bool traverseBvh(const BvhNode* nodes, Ray& ray, Hit& hit, bool anyHit, IntersectPrim&& intersect) {
-    return traverseBvh<false>(nodes, ray, hit, anyHit, intersect, intersect);
+URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, Hit& hit, bool anyHit,
+                          IntersectPrim&& intersect) {
+    return traverseBvh<false>(nodes, r, ray, hit, anyHit, intersect, intersect);
 }
 
 } // namespace urbis

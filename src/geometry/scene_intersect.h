@@ -41,7 +41,8 @@ URBIS_HD inline SurfaceHit groundSurface(const SceneView& scene, float t) {
 /// lane of the warp holds one (traverseBvh). Both find the same hit.
 template <bool Defer = URBIS_GPU_CODE>
 URBIS_HD inline SurfaceHit traceMixed(const SceneView& scene, Ray& ray, bool anyHit) {
-    const WatertightRay wr(ray);
+    const BvhRay br(ray);
+    const WatertightRay wr(ray, br.invDir);
     Hit hit;
     WallHit wallHit;
     auto testTriangle = [&](uint32_t slot, Ray& r, Hit& h) {
@@ -55,13 +56,13 @@ URBIS_HD inline SurfaceHit traceMixed(const SceneView& scene, Ray& ray, bool any
     auto testWall = [&](uint32_t slot, Ray& r, Hit& h) {
         const uint32_t ref = scene.primRefs[slot];
         WallHit w;
-        if (!intersectWall(scene.walls[primRefIndex(ref)], r, w, anyHit)) return false;
+        if (!intersectWall(scene.walls[primRefIndex(ref)], r, w, anyHit, br.invDir[1])) return false;
         h = {ref, w.t, 0, 0};
         wallHit = w;
         r.tmax = w.t;
         return true;
     };
-    traverseBvh<true, Defer>(scene.geometry.nodes, ray, hit, anyHit, testTriangle, testWall);
+    traverseBvh<true, Defer>(scene.geometry.nodes, br, ray, hit, anyHit, testTriangle, testWall);
     if (!hit.valid()) return {};
     const uint32_t index = primRefIndex(hit.prim);
     if (primRefKind(hit.prim) == PrimKind::Triangle) return triangleSurface(scene, index, hit.t);

@@ -1,6 +1,7 @@
 // Watertight ray/triangle intersection (host+device).
 #pragma once
 
+#include "accel/bvh_traverse.h"
 #include "math/ray.h"
 #include "scene/triangle.h"
 
@@ -16,7 +17,9 @@ struct WatertightRay {
     float sx = 0, sy = 0, sz = 1;
 
     WatertightRay() = default;
-    URBIS_HD explicit WatertightRay(const Ray& ray) : origin(ray.origin) {
+    /// `invDir`: BvhRay's 1 / ray.dir per axis (1 / ray.dir[kz] among them), which the traversal works
+    /// out anyway.
+    URBIS_HD WatertightRay(const Ray& ray, const float (&invDir)[3]) : origin(ray.origin) {
         kz = maxAbsAxis(ray.dir);
         kx = kz == 2 ? 0 : kz + 1;
         ky = kx == 2 ? 0 : kx + 1;
@@ -28,8 +31,9 @@ struct WatertightRay {
         }
         sx = ray.dir[kx] / ray.dir[kz];
         sy = ray.dir[ky] / ray.dir[kz];
-        sz = 1.0f / ray.dir[kz];
+        sz = kz == 0 ? invDir[0] : (kz == 1 ? invDir[1] : invDir[2]);
     }
+    URBIS_HD explicit WatertightRay(const Ray& ray) : WatertightRay(ray, BvhRay(ray).invDir) {}
 };
 
 /// a*b - c*d rounded as two products and one difference, never contracted to a fused

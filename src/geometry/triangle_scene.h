@@ -21,9 +21,10 @@ struct TriangleSceneView {
 /// view.triangles (leaf order); invalid if nothing is hit. Watertight (Woop et al. 2013) and
 /// robust in the BVH (Ize 2013).
 URBIS_HD inline Hit traceTriangles(const TriangleSceneView& view, Ray ray, bool anyHit) {
-    const WatertightRay wr(ray);
+    const BvhRay br(ray);
+    const WatertightRay wr(ray, br.invDir);
     Hit hit;
-    traverseBvh(view.nodes, ray, hit, anyHit, [&](uint32_t prim, Ray& r, Hit& h) {
+    traverseBvh(view.nodes, br, ray, hit, anyHit, [&](uint32_t prim, Ray& r, Hit& h) {
         float t, u, v;
         if (!intersectTriangle(view.triangles[prim], r, wr, t, u, v)) return false;
         h = {prim, t, u, v};

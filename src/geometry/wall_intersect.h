@@ -1,7 +1,8 @@
 // Ray/procedural-wall intersection (host+device): the ray is taken into wall coordinates, the wall
 // plane's margins are one plane test, and the floor x slot grid is walked cell by cell along the
-// ray (a 2D DDA, J. Amanatides and A. Woo, "A Fast Voxel Traversal Algorithm for Ray Tracing",
-// Eurographics 1987), testing only the parts of the cells the ray passes through.
+// ray (as a 2D DDA, J. Amanatides and A. Woo, "A Fast Voxel Traversal Algorithm for Ray Tracing",
+// Eurographics 1987, each step taken from the bounds of the cell it leaves), testing only the
+// parts of the cells the ray passes through.
 #pragma once
 
 #include "accel/bvh_traverse.h"
@@ -28,12 +29,15 @@ struct WallRay {
     Vec3f o, d, invD;
     float tmin;
 
-    URBIS_HD WallRay(const WallRecord& wall, const Ray& ray) : tmin(ray.tmin) {
+    /// `invDirY`: BvhRay::safeInverse(ray.dir.y), the y axis being the same in both (the traversal's
+    /// BvhRay has it already).
+    URBIS_HD WallRay(const WallRecord& wall, const Ray& ray, float invDirY) : tmin(ray.tmin) {
         const Vec3f rel = ray.origin - wall.origin;
         o = {dot(rel, wall.axisU), rel.y, dot(rel, wall.normal)};
         d = {dot(ray.dir, wall.axisU), ray.dir.y, dot(ray.dir, wall.normal)};
-        invD = {BvhRay::safeInverse(d.x), BvhRay::safeInverse(d.y), BvhRay::safeInverse(d.z)};
+        invD = {BvhRay::safeInverse(d.x), invDirY, BvhRay::safeInverse(d.z)};
     }
+    URBIS_HD WallRay(const WallRecord& wall, const Ray& ray) : WallRay(wall, ray, BvhRay::safeInverse(ray.dir.y)) {}
 
     /// Whether the ray meets the plane w = w0 at tmin < t < tmax: then t and the point's u, v there.
     URBIS_HD bool crossesW(float w0, float tmax, float& t, float& u, float& v) const {
@@ -76,17 +80,6 @@ struct TileRect {
     float u0, u1, v0, v1;
     URBIS_HD explicit TileRect(const WallRecord& w) : u0(w.tileU0()), u1(w.tileU1()), v0(w.tileV0()), v1(w.tileV1()) {}
 };
-
-/// The ray's segment inside the box in wall coordinates that holds all of the tile (wallTileBounds
-/// is the same box in world space), widened by twice the parts' padding so that rounding never
-/// turns away a ray that a padded part at the tile's edge would stop; empty if it misses the box.
-URBIS_HD inline SegmentClip segmentInWallTile(const WallRecord& wall, const TileRect& tile, const WallRay& r, float tmax) {
-    constexpr float e = 2.0f * kWallPartPadding;
-    SegmentClip s{r.tmin, tmax};
-    s.clipToBox(r, {wall.tileReachU0() - e, tile.v0 - e, -wall.reachBack() - e},
-                {wall.tileReachU1() + e, tile.v1 + e, wall.depthFront + e}, 3);
-    return s;
-}
 
 /// The world-space normal of a wall-space axis.
 URBIS_HD inline Vec3f wallAxisNormal(const WallRecord& wall, uint32_t axis) {
@@ -160,14 +153,15 @@ URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const TileRect
 
 /// The parapet's top and inner face (wall_parapet.h). A tile has it only where it reaches the
 /// wall's top, over its own u range (open at the wall's ends, where the mitres reach beyond them).
-/// `segment` is the ray's part in the tile's box: most rays that reach a wall stay below its
-/// parapet there, and are turned away before the two faces are tested.
-URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect& tile, const WallRay& r,
-                                          const SegmentClip& segment, float& tmax, WallHit& hit) {
+/// Both faces lie in the slab -thickness <= w <= 0: most rays that reach a wall stay below the
+/// parapet's deck there, and are turned away before the faces are tested.
+URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect& tile, const WallRay& r, float& tmax,
+                                          WallHit& hit) {
     constexpr float e = kWallPartPadding;
-    const float top = fmaxf(r.o.y + segment.t0 * r.d.y, r.o.y + segment.t1 * r.d.y);
-    if (!(wall.parapetHeight > 0.0f) || wall.tileFloorEnd() < int(wall.floors) ||
-        top < wall.height - wall.parapetHeight - e)
+    if (!(wall.parapetHeight > 0.0f) || wall.tileFloorEnd() < int(wall.floors)) return false;
+    SegmentClip slab{r.tmin, tmax};
+    slab.clip(r.o.z, r.d.z, r.invD.z, -wall.parapetThickness - e, e);
+    if (slab.empty() || fmaxf(r.o.y + slab.t0 * r.d.y, r.o.y + slab.t1 * r.d.y) < wall.height - wall.parapetHeight - e)
         return false;
     const float uLo = wall.slot0 == 0 ? -3.0e38f : tile.u0;
     const float uHi = wall.tileSlotEnd() >= int(wall.slots) ? 3.0e38f : tile.u1;
@@ -205,18 +199,17 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect
 /// cell with a hit: every part of a cell lies in the cell's column, so nothing later is closer.
 /// A tile walks the same cells of the same grid as its whole wall, minus those outside it, so the
 /// closest hit over a wall's tiles is the whole wall's. `anyHit` is a run-time flag (see
-/// traverseBvh); the template below fixes it at compile time.
-URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit, bool anyHit) {
-    const WallRay r(wall, ray);
-    // Many rays that reach a wall in the BVH miss it: the box of a wall that is not aligned with the
-    // axes is loose, and a leaf may hold several walls. One slab test turns them away.
+/// traverseBvh); the template below fixes it at compile time. `invDirY` as for WallRay.
+URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit, bool anyHit, float invDirY) {
+    const WallRay r(wall, ray, invDirY);
+    // The margins, the parapet and the cells' column each turn away the rays that miss them: a slab
+    // test of the tile's whole box first turned away few (5-9 % of the rays that reach a wall in a
+    // generated city) for its cost (docs/gpu_notes.md, ninth session).
     const TileRect tile(wall);
-    const SegmentClip inTile = segmentInWallTile(wall, tile, r, ray.tmax);
-    if (inTile.empty()) return false;
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, tile, r, tmax, hit);
     if (found && anyHit) return true;
-    found |= intersectWallParapet(wall, tile, r, inTile, tmax, hit);
+    found |= intersectWallParapet(wall, tile, r, tmax, hit);
     if (found && anyHit) return true;
     const int slot0 = wall.slot0, slotEnd = wall.tileSlotEnd(), floor0 = wall.floor0, floorEnd = wall.tileFloorEnd();
     if (slot0 >= slotEnd || floor0 >= floorEnd) return found;
@@ -234,16 +227,13 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     s.clip(r.o.z, r.d.z, r.invD.z, (front ? -wall.reveal : -wall.depthBack) - e,
            (front ? wall.depthFront : -wall.reveal) + e);
     if (s.empty()) return found;
-    // The cell of the entry point, and the distances to the next column and row boundaries.
+    // The cell of the entry point; from each cell the walk goes on through the side of the cell (its
+    // bounds from cellLayout) that the ray leaves by first: a ray meets few cells of a wall (1.1 on
+    // average in a generated city), so the walk keeps no increments between them.
     const float pu = r.o.x + s.t0 * r.d.x, pv = r.o.y + s.t0 * r.d.y;
     int i = int(floorf((pu - wall.gridU) / wall.slotWidth)), j = int(floorf((pv - wall.gridV) / wall.floorHeight));
     i = i < slot0 ? slot0 : (i >= slotEnd ? slotEnd - 1 : i);
     j = j < floor0 ? floor0 : (j >= floorEnd ? floorEnd - 1 : j);
-    // Amanatides and Woo's increments: the distances between two column and two row boundaries.
-    const int stepI = r.d.x > 0.0f ? 1 : -1, stepJ = r.d.y > 0.0f ? 1 : -1;
-    const float du = wall.slotWidth * fabsf(r.invD.x), dv = wall.floorHeight * fabsf(r.invD.y);
-    float tu = r.d.x == 0.0f ? 3.0e38f : (wall.gridU + wall.slotWidth * float(i + (stepI > 0 ? 1 : 0)) - r.o.x) * r.invD.x;
-    float tv = r.d.y == 0.0f ? 3.0e38f : (wall.gridV + wall.floorHeight * float(j + (stepJ > 0 ? 1 : 0)) - r.o.y) * r.invD.y;
     for (;;) {
         // One part loop for every cell, two parts on either side of the glass (a balcony adds four
         // in front): closed forms let a warp's lanes take different paths and cost the GPU more
@@ -256,24 +246,21 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
         for (int k = 0; k < parts && !(cellHit && anyHit); ++k)
             cellHit |= intersectWallPart(cellPart(wall, c, coords, side, k), r, tmax, hit);
         if (cellHit) return true;
-        if (tu < tv) {
-            if (tu > s.t1 || tu > tmax) break;
-            i += stepI;
-            if (i < slot0 || i >= slotEnd) break;
-            tu += du;
-        } else {
-            if (tv > s.t1 || tv > tmax) break;
-            j += stepJ;
-            if (j < floor0 || j >= floorEnd) break;
-            tv += dv;
-        }
+        const float tu = r.d.x == 0.0f ? 3.0e38f : ((r.d.x > 0.0f ? c.u1 : c.u0) - r.o.x) * r.invD.x;
+        const float tv = r.d.y == 0.0f ? 3.0e38f : ((r.d.y > 0.0f ? c.v1 : c.v0) - r.o.y) * r.invD.y;
+        const bool acrossU = tu < tv;
+        const float tNext = acrossU ? tu : tv;
+        if (tNext > s.t1 || tNext > tmax) break;
+        if (acrossU) i += r.d.x > 0.0f ? 1 : -1;
+        else j += r.d.y > 0.0f ? 1 : -1;
+        if (i < slot0 || i >= slotEnd || j < floor0 || j >= floorEnd) break;
     }
     return found;
 }
 
 template <bool AnyHit>
 URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit) {
-    return intersectWall(wall, ray, hit, AnyHit);
+    return intersectWall(wall, ray, hit, AnyHit, BvhRay::safeInverse(ray.dir.y));
 }
 
 } // namespace urbis
