@@ -17,16 +17,18 @@ namespace {
 constexpr int kTileX = 8, kTileY = 16;   // 128 threads; each warp covers 8 x 4 pixels
 constexpr int kTraceBlock = 128;
 
-// Five blocks per SM hold the render kernels to 96 registers. Left free, ptxas took 158 for the inlined
-// wall part tests: three blocks per SM, and frames of stored triangles 25 % slower. At four blocks (128
-// registers) stored triangles ran 14 % slower; the walls' kernel, once its code shrank to 3,232
-// instructions, 0-9 % slower than at five (docs/gpu_notes.md, eighth session).
-constexpr int kRenderBlocksPerSm = 5;
+// Blocks per SM that a render kernel's registers must allow. Left free, ptxas took 158 registers for the
+// inlined wall part tests: three blocks per SM, and frames of stored triangles 25 % slower. Stored
+// triangles run fastest at five blocks (96 registers; 14 % slower at four). The walls' kernel is bound
+// by instruction fetches: at four blocks (128 registers) it spills nothing, 120 instructions fewer,
+// and fewer warps share the instruction cache; measured against five, +5 % at 20 m on the generated
+// city, -3 % at 80 m (docs/gpu_notes.md, ninth session).
+template <SceneLayout Layout> constexpr int kRenderBlocksPerSm = Layout == SceneLayout::Mixed ? 4 : 5;
 
 /// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU.
 /// One kernel per scene layout, so that each holds only the traversal it runs.
 template <SceneLayout Layout>
-__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm)
+__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<Layout>)
     renderKernel(SceneView scene, Camera camera, RenderSettings settings, Vec3f* film, unsigned long long* rayCount) {
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
