@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 NVCC=${NVCC:-$(command -v nvcc || echo /usr/local/cuda/bin/nvcc)}
 CUBIN=$(mktemp --suffix=.cubin)
 trap 'rm -f "$CUBIN"' EXIT
-"$NVCC" -std=c++20 -arch=sm_90 -cubin -O3 -fmad=false -DURBIS_HAVE_CUDA=1 -I src "$@" src/gpu/gpu_backend.cu -o "$CUBIN"
+"$NVCC" -std=c++20 -arch=sm_90 -cubin -O3 -fmad=false -ftz=true -DURBIS_HAVE_CUDA=1 -I src "$@" src/gpu/gpu_backend.cu -o "$CUBIN"
 readelf -SW "$CUBIN" 2>/dev/null | python3 -c '
 import re, sys
 for line in sys.stdin:
