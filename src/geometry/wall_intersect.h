@@ -178,13 +178,14 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect
             found = true;
         }
     }
-    // The inner face (the twin's quad: parapetInnerFace) as a point on the plane w = -thickness: a
-    // second copy of intersectWallPart would cost the GPU's instruction cache more (docs/gpu_notes.md).
+    // The inner face (the twin's quad) tested as a point on its plane: a second copy of
+    // intersectWallPart would cost the GPU's instruction cache more (docs/gpu_notes.md).
     float t, u, v;
-    if (r.crossesW(-wall.parapetThickness, tmax, t, u, v) && u >= fmaxf(uLo, wall.parapetInner0) - e &&
-        u <= fminf(uHi, wall.parapetInner1) + e && v >= wall.height - wall.parapetHeight - e && v <= wall.height + e) {
+    if (!r.crossesW(-wall.parapetThickness, tmax, t, u, v)) return found;
+    const WallPart inner = parapetInnerFace(wall);
+    if (u >= fmaxf(uLo, inner.lo.x) - e && u <= fminf(uHi, inner.hi.x) + e && v >= inner.lo.y - e && v <= inner.hi.y + e) {
         tmax = t;
-        hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
+        hit = {t, inner.axis, inner.material, inner.part};
         return true;
     }
     return found;
