@@ -65,6 +65,11 @@ TEST(CliOsm, InspectJsonHasTheDocumentedKeys) {
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_GT(j["buildings"].get<int>(), 10);
     EXPECT_GT(j["roads"].get<int>(), 0);
+    int heights = 0;
+    for (const char* key : {"from_height_tag", "from_levels", "from_nearby_median", "from_type_table", "from_range"})
+        heights += j["heights"].at(key).get<int>();
+    EXPECT_EQ(heights, j["buildings"].get<int>());
+    EXPECT_EQ(j["heights"]["from_range"], 0); // estimated: inspect takes no --building-height-range
 }
 
 TEST(CliOsm, BrokenFilesGiveOneLineAndNoOutput) {

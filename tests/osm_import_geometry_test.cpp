@@ -120,7 +120,7 @@ TEST(OsmImportGeometry, RingsAreCleanedRepairedOrDropped) {
         // 206: centroid outside the bounds.
         node(13, 9000, 1000) + node(14, 9100, 1000) + node(15, 9100, 1100) +
         way(206, {13, 14, 15, 13}, tag("building", "yes")) +
-        // 207: a bad height tag: kept with a seeded height, and counted.
+        // 207: a bad height tag: kept with an estimated height (no tagged neighbours: the table), and counted.
         node(16, 500, 500) + node(17, 600, 500) + node(18, 600, 600) +
         way(207, {16, 17, 18, 16}, tag("building", "yes") + tag("height", "tall"));
     const CityModel city = importOsm(writeOsm("rings.osm", body), {});
@@ -138,7 +138,7 @@ TEST(OsmImportGeometry, RingsAreCleanedRepairedOrDropped) {
     EXPECT_EQ(city.dropped.at("incomplete_geometry"), 1u);
     EXPECT_EQ(city.dropped.at("outside_bbox"), 1u);
     ASSERT_NE(findBuilding(city, 207), nullptr);
-    EXPECT_EQ(findBuilding(city, 207)->heightSource, HeightSource::Seeded);
+    EXPECT_EQ(findBuilding(city, 207)->heightSource, HeightSource::TypeTable);
     EXPECT_EQ(city.dropped.at("bad_height_tag"), 1u);
     EXPECT_EQ(city.buildings.size(), 3u);
 }

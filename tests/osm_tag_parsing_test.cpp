@@ -96,7 +96,7 @@ TEST(ColourTable, NamesAndHexAreLinear) {
     EXPECT_NEAR(linearFromSrgb(0.5f), 0.2140411f, 1e-6);
 }
 
-TEST(BuildingTags, HeightFromTagLevelsOrSeed) {
+TEST(BuildingTags, HeightFromTagOrLevelsElseLeftToEstimate) {
     ImportOptions options;
     std::map<std::string, uint64_t> issues;
     const std::map<std::string, std::string> tagged{{"building", "office"}, {"height", "40'"}, {"min_height", "3 m"}};
@@ -115,27 +115,27 @@ TEST(BuildingTags, HeightFromTagLevelsOrSeed) {
     EXPECT_EQ(b.roofShape, RoofShape::Gabled);
     EXPECT_TRUE(issues.empty());
 
-    const std::map<std::string, std::string> untagged{{"building", "yes"}};
+    // Untagged: a placeholder one storey under the roof, for estimateHeights to replace.
+    const std::map<std::string, std::string> untagged{{"building", "yes"}, {"roof:height", "5"}};
     const Building c1 = buildingFromTags(tagsOf(untagged), options, 12345, issues);
     const Building c2 = buildingFromTags(tagsOf(untagged), options, 12345, issues);
     const Building d = buildingFromTags(tagsOf(untagged), options, 12346, issues);
-    EXPECT_EQ(c1.heightSource, HeightSource::Seeded);
-    EXPECT_EQ(c1.height, c2.height);
+    EXPECT_EQ(c1.heightSource, HeightSource::TypeTable);
+    EXPECT_FALSE(isTagged(c1.heightSource));
+    EXPECT_FLOAT_EQ(c1.height, 5.0f + options.metresPerLevel);
+    EXPECT_FLOAT_EQ(c1.roofHeight, 5.0f);
     EXPECT_EQ(c1.seed, c2.seed);
     EXPECT_NE(c1.seed, d.seed);
-    EXPECT_NE(c1.height, d.height);
-    EXPECT_GE(c1.height, options.minBuildingHeight);
-    EXPECT_LE(c1.height, options.maxBuildingHeight);
 }
 
-TEST(BuildingTags, BadHeightIsCountedAndSeeded) {
+TEST(BuildingTags, BadHeightIsCountedAndLeftToEstimate) {
     ImportOptions options;
     for (const char* bad : {"-5", "1e30", "NaN", "tall", "0"}) {
         std::map<std::string, uint64_t> issues;
         const std::map<std::string, std::string> tags{{"building", "yes"}, {"height", bad}};
         const Building b = buildingFromTags(tagsOf(tags), options, 1, issues);
         EXPECT_EQ(issues["bad_height_tag"], 1u) << bad;
-        EXPECT_EQ(b.heightSource, HeightSource::Seeded) << bad;
+        EXPECT_EQ(b.heightSource, HeightSource::TypeTable) << bad;
         EXPECT_TRUE(std::isfinite(b.height)) << bad;
     }
 }

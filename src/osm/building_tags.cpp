@@ -72,10 +72,10 @@ Building buildingFromTags(const TagLookup& tag, const ImportOptions& options, in
         b.height = float(*levels) * perLevel + roofGuess;
         b.heightSource = HeightSource::Levels;
     } else {
-        const float u = float(objectSeed(options.seed ^ 0x5bd1e995u, osmId)) * 0x1p-32f;
-        b.height = b.minHeight + options.minBuildingHeight +
-                   u * (options.maxBuildingHeight - options.minBuildingHeight);
-        b.heightSource = HeightSource::Seeded;
+        // Neighbours and region are unknown until the whole file is read: estimateHeights
+        // replaces this one storey under the roof, which only keeps a tagged roof unclamped.
+        b.height = b.minHeight + roofGuess + perLevel;
+        b.heightSource = HeightSource::TypeTable;
     }
     if (b.minHeight >= b.height) {
         ++issues["bad_min_height_tag"];

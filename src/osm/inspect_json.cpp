@@ -48,7 +48,9 @@ nlohmann::json inspectJson(const CityModel& city) {
     j["water"] = countAreas(AreaKind::Water);
     j["heights"] = {{"from_height_tag", countHeights(HeightSource::HeightTag)},
                     {"from_levels", countHeights(HeightSource::Levels)},
-                    {"seeded", countHeights(HeightSource::Seeded)}};
+                    {"from_nearby_median", countHeights(HeightSource::NearbyMedian)},
+                    {"from_type_table", countHeights(HeightSource::TypeTable)},
+                    {"from_range", countHeights(HeightSource::Range)}};
     j["dropped"] = nlohmann::json::object();
     for (const auto& [reason, n] : city.dropped) j["dropped"][reason] = n;
     j["extent_m"] = {{"width", e[2] - e[0]}, {"depth", e[3] - e[1]}};

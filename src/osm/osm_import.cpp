@@ -2,6 +2,7 @@
 
 #include "model/input_error.h"
 #include "osm/city_builder.h"
+#include "osm/height_estimate.h"
 #include "osm/osm_reader.h"
 
 #include <algorithm>
@@ -21,8 +22,8 @@ constexpr double kExtentPadding = 1e-6; // degrees, about 0.1 m
 }
 
 void checkOptions(const std::string& path, const ImportOptions& options) {
-    if (!(options.minBuildingHeight > 0.0f && options.minBuildingHeight <= options.maxBuildingHeight &&
-          options.maxBuildingHeight <= 1000.0f))
+    if (const auto& range = options.untaggedHeightRange;
+        range && !((*range)[0] > 0.0f && (*range)[0] <= (*range)[1] && (*range)[1] <= 1000.0f))
         fail(path, "building height range must satisfy 0 < min <= max <= 1000 m");
     if (!(options.metresPerLevel > 0.0f && options.metresPerLevel < 20.0f))
         fail(path, "metres per level must lie in (0, 20)");
@@ -65,6 +66,7 @@ CityModel importOsm(const std::string& path, const ImportOptions& options) {
     if (city.buildings.empty())
         fail(path, "no buildings inside the box (" + std::to_string(box.minLon) + "," + std::to_string(box.minLat) +
                        "," + std::to_string(box.maxLon) + "," + std::to_string(box.maxLat) + ")");
+    estimateHeights(city, options);
     city.source = std::filesystem::path(path).filename().string();
     return city;
 }

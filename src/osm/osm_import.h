@@ -15,7 +15,8 @@ namespace urbis {
 /// a building outline that holds parts is replaced by them), roads, street lamps, trees,
 /// parks and water. Everything is projected to metres on the plane tangent to the WGS84
 /// ellipsoid at the centre of the crop box (options.bbox, else the header box, else the
-/// data extent) and cropped to that box. Objects that cannot be used are dropped and
+/// data extent) and cropped to that box. Buildings without height tags get estimated
+/// heights (estimateHeights, osm/height_estimate.h). Objects that cannot be used are dropped and
 /// counted in CityModel::dropped by reason; they are never fatal.
 /// Throws InputError with one line "<path>: <problem>" for a missing, unreadable or
 /// malformed file, bad options, or a box that holds no building.
@@ -24,7 +25,9 @@ CityModel importOsm(const std::string& path, const ImportOptions& options);
 /// The JSON object `urbis inspect --json` prints for a city: counts (buildings, all
 /// building records including parts; building_parts; roads; lamps; trees; parks; water),
 /// dropped (reason -> count), extent_m {width, depth} of the model's geometry in metres,
-/// origin {lat, lon} in degrees, source, and heights by source.
+/// origin {lat, lon} in degrees, source, and heights: buildings by HeightSource
+/// (from_height_tag, from_levels, from_nearby_median, from_type_table, and from_range: the
+/// explicit seeded range of ImportOptions::untaggedHeightRange).
 nlohmann::json inspectJson(const CityModel& city);
 
 } // namespace urbis
