@@ -20,8 +20,8 @@ struct Measured {
 const std::string kShared = URBIS_SHARED_DATA;
 
 const Measured kMeasured[] = {
-    {"SanFrancisco", kShared + "/sf_downtown_2023.osm.pbf", MEDIAN_SF},
-    {"London", kShared + "/london_city_2020.osm.pbf", MEDIAN_LONDON},
+    {"SanFrancisco", kShared + "/sf_downtown_2023.osm.pbf", 3.0},
+    {"London", kShared + "/london_city_2020.osm.pbf", 3.0},
 };
 
 /// Names the case in test output instead of dumping its bytes.

@@ -55,8 +55,8 @@ TEST(HeightTable, TypicalHeightsByTypeAndRegion) {
         Region region;
         float min, max;
     } cases[] = {
-        {BuildingType::House, Region::Europe, 5, 9},          {BuildingType::House, Region::NorthAmerica, 5, 9},
-        {BuildingType::Residential, Region::Europe, 13, 19},  {BuildingType::Residential, Region::NorthAmerica, 6, 10},
+        {BuildingType::House, Region::Europe, 6, 10},         {BuildingType::House, Region::NorthAmerica, 6, 10},
+        {BuildingType::Residential, Region::Europe, 13, 19},  {BuildingType::Residential, Region::NorthAmerica, 6, 12},
         {BuildingType::Apartments, Region::EastAsia, 30, 60}, {BuildingType::Retail, Region::Other, 4, 8},
         {BuildingType::Warehouse, Region::Europe, 6, 10},     {BuildingType::Religious, Region::Other, 12, 20},
         {BuildingType::Garage, Region::Europe, 2.7f, 3.3f},   {BuildingType::Shed, Region::NorthAmerica, 2.2f, 2.8f}};
@@ -89,13 +89,19 @@ TEST(HeightEstimate, UntaggedHouseGetsTheMedianOfTaggedHousesNearby) {
                             {square(1, 0, 0, BuildingType::House), square(2, 30, 0, BuildingType::House, 6.0f),
                              square(3, 0, 40, BuildingType::House, 9.0f), square(4, -50, 0, BuildingType::House, 7.0f),
                              square(5, 0, -60, BuildingType::House, 8.0f),
-                             // Taller, but of another type or too far: not neighbours.
+                             // A house with only two tagged ones within 150 m looks twice as far.
+                             square(8, 200, 200, BuildingType::House, 20.0f), square(9, 220, 200, BuildingType::House, 20.0f),
+                             square(10, 250, 150, BuildingType::House),
+                             // Taller, but of another type or too far for house 1: not its neighbours.
                              square(6, 10, 10, BuildingType::Office, 60.0f),
                              square(7, 400, 0, BuildingType::House, 30.0f)});
     city.buildings[0].minHeight = 1.0f;
     estimateHeights(city, {});
     EXPECT_EQ(byId(city, 1).heightSource, HeightSource::NearbyMedian);
     EXPECT_FLOAT_EQ(byId(city, 1).height, 1.0f + 7.5f); // above its base: the median of 6, 7, 8, 9
+    // Within 300 m of house 10: 2 (6 m), 3 (9 m), 7 (30 m), 8 and 9 (20 m).
+    EXPECT_EQ(byId(city, 10).heightSource, HeightSource::NearbyMedian);
+    EXPECT_FLOAT_EQ(byId(city, 10).height, 20.0f);
 }
 
 TEST(HeightEstimate, IsolatedChurchGetsTheTableValue) {

@@ -16,7 +16,8 @@ inline constexpr size_t kMinHeightNeighbours = 3;
 /// its base, the first that applies of:
 /// - options.untaggedHeightRange: uniform in it, seeded by (options.seed, osmId) (Range);
 /// - the median height above base of the tagged buildings of the same type whose centroids lie
-///   within kHeightNeighbourRadius of its centroid, if at least kMinHeightNeighbours (NearbyMedian);
+///   within kHeightNeighbourRadius of its centroid, if at least kMinHeightNeighbours, else
+///   within twice that radius (NearbyMedian);
 /// - typicalHeight(type, regionOf(city origin)), varied uniformly within the span by
 ///   (options.seed, osmId) (TypeTable).
 /// A tagged roof keeps at least one storey (options.metresPerLevel) under it. Only tagged

@@ -21,8 +21,8 @@ struct HeightSpan {
 };
 
 /// The span of typical heights of a building type in a region (the type's Other row where the
-/// region has none of its own). Examples: a house 5-9 m (1-2 storeys and a roof), a European
-/// residential block 13-19 m (4-6 storeys), a North American one 6-10 m (mostly houses), a
+/// region has none of its own). Examples: a house 6-10 m (1-2 storeys and a roof), a European
+/// residential block 13-19 m (4-6 storeys), a North American one 6-12 m (mostly houses), a
 /// warehouse 6-10 m, a church's nave 12-20 m, a garage 3 m, a shed 2.5 m.
 HeightSpan typicalHeight(BuildingType type, Region region);
 
