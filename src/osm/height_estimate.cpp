@@ -13,8 +13,8 @@ namespace urbis {
 
 namespace {
 
-// Salts of the per-building uniform draws; the range's is the one seeded heights always used,
-// so --building-height-range gives the heights it gave before estimates existed.
+// Salts keep the per-building draws apart. The range's is fixed so that a scene rendered with
+// --building-height-range and a seed keeps its heights from one version to the next.
 constexpr uint32_t kRangeSalt = 0x5bd1e995u, kTableSalt = 0x27d4eb2fu;
 
 float uniform(uint32_t seed, uint32_t salt, int64_t osmId) {
