@@ -97,14 +97,15 @@ Building buildingFromTags(const TagLookup& tag, const ImportOptions& options, in
     const char* material = tag("building:material");
     b.material = material ? parseMaterial(material) : BuildingMaterial::Unknown;
 
-    const BuildingColours defaults = defaultColours(b.type);
-    b.wallColour = materialColour(b.material).value_or(defaults.wall);
-    if (const char* roofMaterial = tag("roof:material"))
-        b.roofColour = roofMaterialColour(roofMaterial).value_or(defaults.roof);
-    else
-        b.roofColour = defaults.roof;
-    if (const auto wall = readTag(tag, "building:colour", parseColour, "bad_colour_tag", issues)) b.wallColour = *wall;
-    if (const auto roofColour = readTag(tag, "roof:colour", parseColour, "bad_colour_tag", issues)) b.roofColour = *roofColour;
+    // Colours no tag sets are left to paintUntaggedBuildings, which knows the city's region.
+    std::optional<Rgb> wallTagged = materialColour(b.material), roofTagged;
+    if (const char* roofMaterial = tag("roof:material")) roofTagged = roofMaterialColour(roofMaterial);
+    if (const auto c = readTag(tag, "building:colour", parseColour, "bad_colour_tag", issues)) wallTagged = c;
+    if (const auto c = readTag(tag, "roof:colour", parseColour, "bad_colour_tag", issues)) roofTagged = c;
+    b.wallColourTagged = wallTagged.has_value();
+    b.roofColourTagged = roofTagged.has_value();
+    b.wallColour = wallTagged.value_or(b.wallColour);
+    b.roofColour = roofTagged.value_or(b.roofColour);
     return b;
 }
 
