@@ -26,13 +26,13 @@ struct RegionSwatches {
 constexpr uint32_t kCentralRoofs[] = {0x8c4a36, 0x7b3f2f, 0x9a5a42, 0x6a3c30, 0x4c4c4e, 0x3c3e42, 0x5a4036};
 constexpr uint32_t kCentralWalls[] = {0xe9e4d8, 0xe8dcc0, 0xdcc79c, 0xcfb58a, 0xd9d4cc, 0xc4b8a8, 0x9c5c46, 0xe2d2c2};
 constexpr uint32_t kBritishRoofs[] = {0x4b5058, 0x555a61, 0x3e4248, 0x5c6066, 0x8a5040, 0x7a4536};
-constexpr uint32_t kBritishWalls[] = {0x9a5a44, 0x8a4e3c, 0xb9a27c, 0xa88e6a, 0xe6e0d4, 0xd6cdb8};
+constexpr uint32_t kBritishWalls[] = {0x9a5a44, 0xb9a27c, 0xa88e6a, 0xe6e0d4, 0xd6cdb8, 0xcfc6b4, 0xbcb8b0, 0x8a4e3c};
 constexpr uint32_t kSouthernRoofs[] = {0xa65e40, 0xb06c4a, 0x9a5538, 0x8e5a44, 0xb8805c};
 constexpr uint32_t kSouthernWalls[] = {0xefe8da, 0xe8d2a8, 0xdcb888, 0xe0c2a2, 0xf0ebe2, 0xcfa37a};
 constexpr uint32_t kEasternRoofs[] = {0x5f7a66, 0x687076, 0x7a4a3a, 0x4f5a52, 0x8a8e92, 0x5a6470};
 constexpr uint32_t kEasternWalls[] = {0xe8d39c, 0xe6c8b4, 0xece8de, 0xd8c8a8, 0xb8b6ae, 0xc9d0c8};
 constexpr uint32_t kAmericanRoofs[] = {0x4a4a4a, 0x5b5650, 0x6b6259, 0x3d3b3a, 0x7a6e62, 0x55504a};
-constexpr uint32_t kAmericanWalls[] = {0x8e4f3c, 0xa0705a, 0xd8d4c8, 0xc4bca8, 0xa8aaa8, 0xb8ab94};
+constexpr uint32_t kAmericanWalls[] = {0x8e4f3c, 0xa0705a, 0xd8d4c8, 0xc4bca8, 0xa8aaa8, 0xb8ab94, 0xe0dcd2, 0xc8c8c4};
 constexpr uint32_t kOtherRoofs[] = {0x6b5a50, 0x4c4c4e, 0x7b4a3a, 0x5a5a5c};
 constexpr uint32_t kOtherWalls[] = {0xddd6c8, 0xcfc8ba, 0xbdb8ae, 0xd8cdb4, 0xa8a49c};
 
@@ -78,6 +78,7 @@ Rgb draw(Swatches swatches, uint32_t seed, uint32_t stream) {
 
 constexpr uint32_t kRoofStream = 0x526f6f66u; // "Roof"
 constexpr uint32_t kWallStream = 0x57616c6cu; // "Wall"
+constexpr uint32_t kUseStream = 0x55736521u;  // "Use!"
 
 } // namespace
 
@@ -111,6 +112,8 @@ Rgb paletteWallColour(PaletteRegion region, const Building& b) {
     if (isHall(b.type)) swatches = kHallWalls;
     else if (isPublic(b.type)) swatches = kPublicWalls;
     else if (b.type == BuildingType::Religious) swatches = kChurchWalls;
+    // building=yes is an office block as often as a home: half of them get the public walls.
+    else if (b.type == BuildingType::Generic && hashToUnit(hash2(b.seed, kUseStream)) < 0.5f) swatches = kPublicWalls;
     return draw(swatches, b.seed, kWallStream);
 }
 

@@ -26,10 +26,10 @@ PaletteRegion paletteRegionOf(const GeoOrigin& origin);
 /// of five brightness steps (x0.9 to x1.1) are drawn from b.seed.
 Rgb paletteRoofColour(PaletteRegion region, const Building& b);
 
-/// The linear colour of an untagged wall of `b` in `region`: homes and untyped buildings in
-/// the region's plasters, bricks and renders (whites, creams and ochres in Central Europe,
-/// brick and stucco in Britain, ...); offices, shops and public buildings in stone, concrete
-/// and light greys; churches in stone and brick; halls, sheds and garages in cladding and
+/// The linear colour of an untagged wall of `b` in `region`: homes in the region's plasters,
+/// bricks and renders (whites, creams and ochres in Central Europe, brick, stock brick, stucco
+/// and stone in Britain, ...); offices, shops and public buildings in stone, concrete and
+/// light greys; untyped buildings (`building=yes`) half as homes, half as offices; churches in stone and brick; halls, sheds and garages in cladding and
 /// concrete greys. Drawn from b.seed like the roof, independently of it.
 Rgb paletteWallColour(PaletteRegion region, const Building& b);
 
