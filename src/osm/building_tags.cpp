@@ -1,5 +1,6 @@
 #include "osm/building_tags.h"
 
+#include "osm/building_use.h"
 #include "osm/colour_table.h"
 #include "osm/tag_parsing.h"
 
@@ -91,9 +92,7 @@ Building buildingFromTags(const TagLookup& tag, const ImportOptions& options, in
     }
     if (const char* orientation = tag("roof:orientation")) b.roofAcross = std::string_view(orientation) == "across";
 
-    const char* type = tag("building");
-    if (!type) type = tag("building:part");
-    b.type = type ? parseBuildingType(type) : BuildingType::Generic;
+    b.type = buildingTypeFromTags(tag);
     const char* material = tag("building:material");
     b.material = material ? parseMaterial(material) : BuildingMaterial::Unknown;
 
