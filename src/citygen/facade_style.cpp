@@ -7,10 +7,6 @@ namespace urbis {
 namespace {
 
 /// Defaults per building type; the seed then varies sizes within a few tens of centimetres.
-/// Balconies only where people live (homes, flats, hotels): never on churches, towers, halls,
-/// offices, shops or schools. Generic (`building=yes` with no other hint) gets none either:
-/// it covers church towers, offices and sheds as often as flats, and a balcony on a spire
-/// looks wrong where a missing one on a block of flats goes unnoticed.
 struct TypeRow {
     BuildingType type;
     bool hasFacade;
@@ -20,6 +16,11 @@ struct TypeRow {
     bool shopFront;
 };
 
+// Balconies only where people live (homes, flats, hotels): never on churches, towers, halls,
+// offices, shops or schools. Generic (`building=yes` whose use tags name no type, see
+// buildingTypeFromTags) gets none either: it covers church towers, offices and sheds as often
+// as flats, and a balcony on a spire looks wrong where a missing one on a block of flats
+// goes unnoticed.
 constexpr TypeRow kRows[] = {
     // type                      facade floor  slot  frac  winH  sill  curtain balcony shop
     {BuildingType::Generic,      true,  3.2f, 3.0f, 0.45f, 1.5f, 0.9f, 0.0f,  0.0f,  false},

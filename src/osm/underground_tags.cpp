@@ -12,7 +12,8 @@ namespace urbis {
 
 namespace {
 
-/// Calls f(item) for each item of a ';'-separated OSM list, blanks trimmed; stops when f is false.
+/// Whether f(item) holds for every item of a ';'-separated OSM list, blanks trimmed (stops
+/// at the first item it fails on).
 template <typename F>
 bool allItems(std::string_view list, F&& f) {
     for (;;) {
