@@ -1,5 +1,6 @@
 // Small hand-written .osm files through the whole importer: multipolygon holes, parts
-// replacing outlines, ring cleaning and orientation, repairs and drops, road clipping.
+// replacing outlines, underground drops, ring cleaning and orientation, repairs and drops,
+// road clipping.
 #include "osm/osm_import.h"
 #include "osm/polygon_ops.h"
 
@@ -101,6 +102,40 @@ TEST(OsmImportGeometry, PartsReplaceTheirOutline) {
     ASSERT_NE(findBuilding(city, 103), nullptr);
     EXPECT_FALSE(findBuilding(city, 103)->isPart);
     EXPECT_EQ(city.dropped.at("replaced_by_parts"), 1u);
+}
+
+TEST(OsmImportGeometry, UndergroundBuildingsAreDroppedAndCounted) {
+    // A house, and a metro station hall beside it tagged as San Francisco's are.
+    const std::string body =
+        node(1, 1000, 1000) + node(2, 1100, 1000) + node(3, 1100, 1100) + node(4, 1000, 1100) +
+        node(5, 1300, 1000) + node(6, 1600, 1000) + node(7, 1600, 1200) + node(8, 1300, 1200) +
+        way(100, {1, 2, 3, 4, 1}, tag("building", "house")) +
+        way(101, {5, 6, 7, 8, 5}, tag("building", "train_station") + tag("location", "underground") +
+                                      tag("layer", "-1") + tag("level", "-3;-2;-1"));
+    const CityModel city = importOsm(writeOsm("underground.osm", body), {});
+    ASSERT_EQ(city.buildings.size(), 1u);
+    EXPECT_EQ(city.buildings[0].osmId, 100);
+    EXPECT_EQ(city.dropped.at("underground"), 1u);
+}
+
+TEST(OsmImportGeometry, UndergroundPartLeavesItsOutlineAndBridgesStay) {
+    // Outline 100 over a basement garage part (level=-1), which replaces nothing; part 102,
+    // a bridge between buildings from the third storey up, stands.
+    const std::string body =
+        node(1, 1000, 1000) + node(2, 1200, 1000) + node(3, 1200, 1100) + node(4, 1000, 1100) +
+        node(5, 1010, 1010) + node(6, 1190, 1010) + node(7, 1190, 1090) + node(8, 1010, 1090) +
+        node(9, 2000, 1000) + node(10, 2100, 1000) + node(11, 2100, 1030) + node(12, 2000, 1030) +
+        way(100, {1, 2, 3, 4, 1}, tag("building", "apartments")) +
+        way(101, {5, 6, 7, 8, 5}, tag("building:part", "garages") + tag("level", "-1")) +
+        way(102, {9, 10, 11, 12, 9}, tag("building:part", "yes") + tag("building:min_level", "3") +
+                                         tag("building:levels", "4"));
+    const CityModel city = importOsm(writeOsm("underground_part.osm", body), {});
+    ASSERT_EQ(city.buildings.size(), 2u);
+    ASSERT_NE(findBuilding(city, 100), nullptr);
+    ASSERT_NE(findBuilding(city, 102), nullptr);
+    EXPECT_GT(findBuilding(city, 102)->minHeight, 0.0f);
+    EXPECT_EQ(city.dropped.at("part_underground"), 1u);
+    EXPECT_FALSE(city.dropped.contains("underground"));
 }
 
 TEST(OsmImportGeometry, RingsAreCleanedRepairedOrDropped) {

@@ -5,6 +5,8 @@
 #include "osm/street_tags.h"
 #include "osm/tag_parsing.h"
 
+#include "tag_map.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,17 +16,7 @@
 
 using namespace urbis;
 
-namespace {
-
-/// A TagLookup over a map, as tests write tags.
-TagLookup tagsOf(const std::map<std::string, std::string>& tags) {
-    return [&tags](const char* key) -> const char* {
-        const auto it = tags.find(key);
-        return it == tags.end() ? nullptr : it->second.c_str();
-    };
-}
-
-} // namespace
+using test::tagsOf;
 
 TEST(TagParsing, LengthWithUnits) {
     const std::pair<const char*, double> cases[] = {
@@ -140,19 +132,23 @@ TEST(BuildingTags, BadHeightIsCountedAndLeftToEstimate) {
     }
 }
 
-TEST(BuildingTags, ColoursFromTagMaterialOrType) {
+TEST(BuildingTags, ColoursFromTagOrMaterialElseUntagged) {
     ImportOptions options;
     std::map<std::string, uint64_t> issues;
     const std::map<std::string, std::string> tagged{{"building", "yes"}, {"building:colour", "white"},
-                                                    {"roof:colour", "#800000"}};
+                                                    {"roof:colour", "#800000"}, {"roof:material", "slate"},
+                                                    {"building:material", "brick"}};
     const Building a = buildingFromTags(tagsOf(tagged), options, 1, issues);
     EXPECT_FLOAT_EQ(a.wallColour.g, 1.0f);
     EXPECT_NEAR(a.roofColour.r, linearFromSrgb(128.0f / 255.0f), 1e-6);
-    const std::map<std::string, std::string> brick{{"building", "church"}, {"building:material", "brick"}};
+    EXPECT_TRUE(a.wallColourTagged && a.roofColourTagged);
+    const std::map<std::string, std::string> brick{{"building", "church"}, {"building:material", "brick"},
+                                                   {"roof:material", "thatch-ish"}};
     const Building b = buildingFromTags(tagsOf(brick), options, 1, issues);
     EXPECT_EQ(b.material, BuildingMaterial::Brick);
     EXPECT_FLOAT_EQ(b.wallColour.r, materialColour(BuildingMaterial::Brick)->r);
-    EXPECT_FLOAT_EQ(b.roofColour.g, defaultColours(BuildingType::Religious).roof.g);
+    EXPECT_TRUE(b.wallColourTagged);
+    EXPECT_FALSE(b.roofColourTagged); // an unlisted material leaves the roof to the palette
     const std::map<std::string, std::string> bad{{"building", "yes"}, {"building:colour", "sky"}};
     buildingFromTags(tagsOf(bad), options, 1, issues);
     EXPECT_EQ(issues["bad_colour_tag"], 1u);

@@ -74,6 +74,8 @@ struct Building {
     BuildingMaterial material = BuildingMaterial::Unknown;
     Rgb wallColour;
     Rgb roofColour{0.35f, 0.33f, 0.32f};
+    bool wallColourTagged = false; ///< wallColour from building:colour or building:material, else a palette's
+    bool roofColourTagged = false; ///< roofColour from roof:colour or roof:material, else a palette's
     uint32_t seed = 0;            ///< per-building seed for everything procedural
 };
 

@@ -40,7 +40,11 @@ public:
         bool kept = false;
         for (const GeoPolygon& g : raw.polygons) {
             Building b = raw.attributes;
-            if (const char* reason = makePolygon(g, role, b.footprint)) {
+            // Underground objects are counted only where they would otherwise stand, so that
+            // one outside the box still counts as outside_bbox.
+            const char* reason = makePolygon(g, role, b.footprint);
+            if (!reason && raw.underground) reason = "underground";
+            if (reason) {
                 ++city_.dropped[dropKey(role, reason)];
                 continue;
             }

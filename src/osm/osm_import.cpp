@@ -1,6 +1,7 @@
 #include "osm/osm_import.h"
 
 #include "model/input_error.h"
+#include "osm/building_palette.h"
 #include "osm/city_builder.h"
 #include "osm/height_estimate.h"
 #include "osm/osm_reader.h"
@@ -63,6 +64,7 @@ CityModel importOsm(const std::string& path, const ImportOptions& options) {
     }
 
     CityModel city = buildCityModel(std::move(raw), box);
+    paintUntaggedBuildings(city);
     if (city.buildings.empty())
         fail(path, "no buildings inside the box (" + std::to_string(box.minLon) + "," + std::to_string(box.minLat) +
                        "," + std::to_string(box.maxLon) + "," + std::to_string(box.maxLat) + ")");

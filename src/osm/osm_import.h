@@ -12,8 +12,9 @@ namespace urbis {
 
 /// Reads an OSM file (.osm, .osm.pbf, .osm.bz2, .osm.gz; the format comes from the name)
 /// with libosmium into a CityModel: buildings and building:parts (outer rings + holes;
-/// a building outline that holds parts is replaced by them), roads, street lamps, trees,
-/// parks and water. Everything is projected to metres on the plane tangent to the WGS84
+/// a building outline that holds parts is replaced by them; underground ones dropped, see
+/// isUnderground; untagged colours from the region's palette, see paintUntaggedBuildings),
+/// roads, street lamps, trees, parks and water. Everything is projected to metres on the plane tangent to the WGS84
 /// ellipsoid at the centre of the crop box (options.bbox, else the header box, else the
 /// data extent) and cropped to that box. Buildings without height tags get estimated
 /// heights (estimateHeights, osm/height_estimate.h). Objects that cannot be used are dropped and
