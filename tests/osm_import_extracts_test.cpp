@@ -15,7 +15,6 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <chrono>
 #include <filesystem>
 #include <set>
 
@@ -73,14 +72,11 @@ TEST_P(OsmExtract, CountsMatchOsmium) {
         ASSERT_FALSE(e.required) << e.path << " is missing";
         GTEST_SKIP() << e.path << " not found, skipping";
     }
-    const auto start = std::chrono::steady_clock::now();
+    // Import speed is a benchmark's business (bench/), not this test's: a loaded CI machine must not fail it.
     const CityModel city = importOsm(e.path, {});
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const nlohmann::json summary = inspectJson(city);
-    RecordProperty("import_seconds", std::to_string(seconds));
     RecordProperty("summary", summary.dump());
-    std::cout << e.name << ": " << seconds << " s, " << summary.dump() << "\n";
-    EXPECT_LT(seconds, 2.0);
+    std::cout << e.name << ": " << summary.dump() << "\n";
 
     // Every building object of the file is either kept (perhaps replaced by its parts) or
     // dropped for one reason. Not exact where a multipolygon has several outer rings (each
