@@ -9,11 +9,12 @@ namespace urbis {
 
 /// Builds the CityModel of `raw` cropped to `box`, on the tangent plane at the box's
 /// centre. A building or area polygon is kept when its centroid lies in the box, it has
-/// 3+ distinct points, it is valid (or GEOS repairs it: "repaired") and it covers 1 m^2;
-/// roads are clipped to the box; lamps and trees must lie in it. Rings come out without
-/// duplicate or closing points, outer counter-clockwise, holes clockwise. Everything
-/// dropped is counted in CityModel::dropped (see dropKey); building:parts then replace
-/// their outlines. `source` is left empty.
+/// 3+ distinct points, it is valid (or GEOS repairs it: "made_valid" in CityModel::repaired)
+/// and it covers 1 m^2; roads are clipped to the box; lamps and trees must lie in it. Rings
+/// come out without duplicate or closing points, outer counter-clockwise, holes clockwise.
+/// Everything dropped is recorded with its id in CityModel::dropped (see dropKey), the tag
+/// problems of kept objects in CityModel::repaired; building:parts then replace their
+/// outlines. `source` and the boxes are left empty.
 CityModel buildCityModel(RawFeatures&& raw, const GeoBox& box);
 
 } // namespace urbis
