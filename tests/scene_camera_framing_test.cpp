@@ -75,5 +75,7 @@ TEST(CameraFraming, TheCityFillsTheFrameOnOneAxis) {
         // The least distance puts corners on both margins of one axis: it spans the image less the margins.
         const float span = std::max(box[2] - box[0], box[3] - box[1]);
         EXPECT_GT(span, 0.95f) << "aspect " << aspect << ": the city is framed too small";
+        EXPECT_NEAR(box[0] + box[2], 1.0f, 1e-3f) << "not centred across";
+        EXPECT_NEAR(box[1] + box[3], 1.0f, 1e-3f) << "not centred up and down";
     }
 }

@@ -17,26 +17,42 @@ Camera frameCity(const Bounds3f& cityBounds, float fovYDeg, float aspect) {
     const float tanY = oriented.tanHalfFovY * (1.0f - kFramingMargin);
     const float tans[2] = {tanY * aspect, tanY};
     const Vec3f axes[2] = {oriented.right, oriented.up};
+    Vec3f corners[8];
+    for (int i = 0; i < 8; ++i)
+        corners[i] = Vec3f{i & 1 ? b.hi.x : b.lo.x, i & 2 ? b.hi.y : b.lo.y, i & 4 ? b.hi.z : b.lo.z} - centre;
     // The camera stands at centre + a right + c up - d forward. A corner q (relative to the centre) has
     // depth q.f + d, and lies inside the image across an axis when |q.axis - shift| <= tan (q.f + d):
     // shift >= q.axis - tan q.f - tan d and shift <= q.axis + tan q.f + tan d over all corners. The least
-    // d that leaves room for a shift is (max(q.axis - tan q.f) - min(q.axis + tan q.f)) / (2 tan), and
-    // the shift halfway between the bounds centres the corners on that axis.
+    // d that leaves room for a shift is (max(q.axis - tan q.f) - min(q.axis + tan q.f)) / (2 tan).
     // Every corner at least 1 m in front of the camera puts all of the (convex) box in front of it.
-    float distance = 0.0f, shift[2] = {0.0f, 0.0f};
+    float distance = 0.0f, lower[2], upper[2];
     for (int k = 0; k < 2; ++k) {
-        float lower = -1e30f, upper = 1e30f;
-        for (int i = 0; i < 8; ++i) {
-            const Vec3f q = Vec3f{i & 1 ? b.hi.x : b.lo.x, i & 2 ? b.hi.y : b.lo.y, i & 4 ? b.hi.z : b.lo.z} - centre;
+        lower[k] = -1e30f, upper[k] = 1e30f;
+        for (const Vec3f& q : corners) {
             const float along = dot(q, axes[k]), depth = dot(q, oriented.forward);
-            lower = std::max(lower, along - tans[k] * depth);
-            upper = std::min(upper, along + tans[k] * depth);
+            lower[k] = std::max(lower[k], along - tans[k] * depth);
+            upper[k] = std::min(upper[k], along + tans[k] * depth);
             distance = std::max(distance, 1.0f - depth);
         }
-        distance = std::max(distance, (lower - upper) / (2.0f * tans[k]));
-        shift[k] = 0.5f * (lower + upper);
+        distance = std::max(distance, (lower[k] - upper[k]) / (2.0f * tans[k]));
     }
-    const Vec3f position = centre + axes[0] * shift[0] + axes[1] * shift[1] - oriented.forward * distance;
+    // Within the shifts that keep every corner inside, the one where the corners reach as far past the
+    // image centre on one side as on the other (their film extent's sum, falling with the shift, is 0).
+    Vec3f position = centre - oriented.forward * distance;
+    for (int k = 0; k < 2; ++k) {
+        float lo = lower[k] - tans[k] * distance, hi = upper[k] + tans[k] * distance;
+        for (int step = 0; step < 40; ++step) {
+            const float shift = 0.5f * (lo + hi);
+            float most = -1e30f, least = 1e30f;
+            for (const Vec3f& q : corners) {
+                const float film = (dot(q, axes[k]) - shift) / (dot(q, oriented.forward) + distance);
+                most = std::max(most, film);
+                least = std::min(least, film);
+            }
+            (most + least > 0.0f ? lo : hi) = shift;
+        }
+        position += axes[k] * (0.5f * (lo + hi));
+    }
     return makeLookAtCamera(position, position + oriented.forward, fovYDeg, aspect);
 }
 
