@@ -59,6 +59,20 @@ TEST(CliOsm, RendersTheBavarianVillage) {
     EXPECT_TRUE(fs::exists(dir / "urbis.png"));
 }
 
+TEST(CliOsm, UntaggedHeightsAreEstimatedUnlessARangeIsGiven) {
+    // The village: 22 of 31 buildings untagged, its tagged ones 6 m (docs/heights.md).
+    auto dir = scratchDir("height_range");
+    const auto meanHeight = [&dir](const std::string& extra) {
+        CommandResult r = runUrbis("render --osm '" + kVillage + "' --width 16 --height 16 --spp 1 --stats s.json " + extra, dir);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return nlohmann::json::parse(readFile(dir / "s.json"))["counts"]["mean_building_height"].get<double>();
+    };
+    EXPECT_LT(meanHeight(""), 10.0);
+    EXPECT_GT(meanHeight("--building-height-range 20:100"), 30.0);
+    CommandResult help = runUrbis("render --help", dir);
+    EXPECT_NE(help.out.find("heights are estimated"), std::string::npos) << help.out;
+}
+
 TEST(CliOsm, InspectJsonHasTheDocumentedKeys) {
     auto dir = scratchDir("inspect");
     CommandResult r = runUrbis("inspect --json '" + kVillage + "'", dir);
@@ -68,6 +82,11 @@ TEST(CliOsm, InspectJsonHasTheDocumentedKeys) {
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_GT(j["buildings"].get<int>(), 10);
     EXPECT_GT(j["roads"].get<int>(), 0);
+    int heights = 0;
+    for (const char* key : {"from_height_tag", "from_levels", "from_nearby_median", "from_type_table", "from_range"})
+        heights += j["heights"].at(key).get<int>();
+    EXPECT_EQ(heights, j["buildings"].get<int>());
+    EXPECT_EQ(j["heights"]["from_range"], 0); // estimated: inspect takes no --building-height-range
 }
 
 TEST(CliOsm, BrokenFilesGiveOneLineAndNoOutput) {

@@ -117,8 +117,7 @@ TEST(OsmBadInput, BoxWithoutBuildings) {
 
 TEST(OsmBadInput, BadOptions) {
     ImportOptions options;
-    options.minBuildingHeight = 50.0f;
-    options.maxBuildingHeight = 10.0f;
+    options.untaggedHeightRange = {{50.0f, 10.0f}};
     expectOneLineNaming(importError(kVillage, options), kVillage, "height range");
     options = {};
     options.bbox = std::array<double, 4>{10.1, 48.0, 10.0, 48.1}; // west > east

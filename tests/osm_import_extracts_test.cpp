@@ -31,22 +31,28 @@ struct Extract {
     uint64_t touching;    ///< building objects with a node in the box
     double straddling;    ///< tolerated share of `touching` whose centroid lies outside
     uint64_t highways, lamps, trees;
+    uint64_t underground, partsUnderground; ///< isUnderground drops, each checked by its tags
 };
 
 const std::string kOsmnx = URBIS_OSMNX_DATA, kShared = URBIS_SHARED_DATA;
 
 const Extract kExtracts[] = {
     // 33 buildings, one with 2 distinct nodes (degenerate); no box needed for the rest.
-    {"Village", kOsmnx + "/planet_10.068,48.135_10.071,48.137.osm", true, 33, 33, 0.04, 19, 0, 0},
+    {"Village", kOsmnx + "/planet_10.068,48.135_10.071,48.137.osm", true, 33, 33, 0.04, 19, 0, 0, 0, 0},
     // 2 of 23 cross the box border with their centroid outside.
-    {"WestOakland", kOsmnx + "/West-Oakland.osm.bz2", true, 23, 23, 0.09, 31, 0, 0},
-    {"SanFrancisco", kShared + "/sf_downtown_2023.osm.pbf", false, 7793, 7134, 0.02, 8553, 533, 2219},
-    {"London", kShared + "/london_city_2020.osm.pbf", false, 2155, 1812, 0.04, 3141, 131, 1078},
-    // 0.85 x 0.66 km box of large city blocks: 38 of 431 straddle.
-    {"Moscow", kShared + "/moscow_center_2020.osm.pbf", false, 678, 431, 0.10, 1304, 31, 61},
-    // No header box: the data extent holds all; one relation lacks members.
-    {"Berlin", kShared + "/berlin_neukolln_2024.osm", false, 127, 127, 0.01, 211, 52, 145},
-    {"NewYork", kShared + "/nyc_queens_village_2016.osm.pbf", false, 50836, 50014, 0.01, 1956, 0, 0},
+    {"WestOakland", kOsmnx + "/West-Oakland.osm.bz2", true, 23, 23, 0.09, 31, 0, 0, 0, 0},
+    // Underground: five BART/Muni station halls and a visitor centre (location=underground), a
+    // car park (parking=underground), a cafe at level=-0.9; a concourse and two platform parts.
+    {"SanFrancisco", kShared + "/sf_downtown_2023.osm.pbf", false, 7793, 7134, 0.02, 8553, 533, 2219, 8, 3},
+    // Underground: a basement pub (level=-1); 15 shops of a lower mall floor (level=-1 parts).
+    {"London", kShared + "/london_city_2020.osm.pbf", false, 2155, 1812, 0.04, 3141, 131, 1078, 1, 15},
+    // 0.85 x 0.66 km box of large city blocks: 38 of 431 straddle. Its one underground
+    // bunker lies outside the box.
+    {"Moscow", kShared + "/moscow_center_2020.osm.pbf", false, 678, 431, 0.10, 1304, 31, 61, 0, 0},
+    // No header box: the data extent holds all; one relation lacks members; nine garage
+    // parts at level=-1.
+    {"Berlin", kShared + "/berlin_neukolln_2024.osm", false, 127, 127, 0.01, 211, 52, 145, 0, 9},
+    {"NewYork", kShared + "/nyc_queens_village_2016.osm.pbf", false, 50836, 50014, 0.01, 1956, 0, 0, 0, 0},
 };
 
 /// Names the case in test output instead of dumping its bytes.
@@ -77,11 +83,12 @@ TEST_P(OsmExtract, CountsMatchOsmium) {
     const uint64_t outlines = city.buildings.size() - city.buildingParts() + countOf(city.dropped, "replaced_by_parts");
     uint64_t dropped = 0;
     for (const char* reason : {"outside_bbox", "incomplete_geometry", "unclosed_way", "degenerate_footprint",
-                               "self_intersecting", "too_small", "invalid_multipolygon"})
+                               "self_intersecting", "too_small", "invalid_multipolygon", "underground"})
         dropped += countOf(city.dropped, reason);
     EXPECT_NEAR(double(outlines + dropped), double(e.total), 0.005 * double(e.total));
 
-    const uint64_t inside = outlines + countOf(city.dropped, "too_small") + countOf(city.dropped, "self_intersecting");
+    const uint64_t inside =
+        outlines + countOf(city.dropped, "too_small") + countOf(city.dropped, "self_intersecting") + countOf(city.dropped, "underground");
     EXPECT_LE(inside, e.touching);
     EXPECT_GE(double(inside), double(e.touching) * (1.0 - e.straddling));
 
@@ -98,6 +105,8 @@ TEST_P(OsmExtract, CountsMatchOsmium) {
         ASSERT_GT(b.height, b.minHeight);
         ASSERT_LE(b.height, 1000.0f);
     }
+    EXPECT_EQ(countOf(city.dropped, "underground"), e.underground);
+    EXPECT_EQ(countOf(city.dropped, "part_underground"), e.partsUnderground);
     EXPECT_EQ(summary["buildings"], city.buildings.size());
     EXPECT_TRUE(city.origin.valid);
 }

@@ -1,5 +1,6 @@
 // Small hand-written .osm files through the whole importer: multipolygon holes, parts
-// replacing outlines, ring cleaning and orientation, repairs and drops, road clipping.
+// replacing outlines, underground drops, ring cleaning and orientation, repairs and drops,
+// road clipping.
 #include "osm/osm_import.h"
 #include "osm/polygon_ops.h"
 
@@ -103,6 +104,40 @@ TEST(OsmImportGeometry, PartsReplaceTheirOutline) {
     EXPECT_EQ(countOf(city.dropped, "replaced_by_parts"), 1u);
 }
 
+TEST(OsmImportGeometry, UndergroundBuildingsAreDroppedAndCounted) {
+    // A house, and a metro station hall beside it tagged as San Francisco's are.
+    const std::string body =
+        node(1, 1000, 1000) + node(2, 1100, 1000) + node(3, 1100, 1100) + node(4, 1000, 1100) +
+        node(5, 1300, 1000) + node(6, 1600, 1000) + node(7, 1600, 1200) + node(8, 1300, 1200) +
+        way(100, {1, 2, 3, 4, 1}, tag("building", "house")) +
+        way(101, {5, 6, 7, 8, 5}, tag("building", "train_station") + tag("location", "underground") +
+                                      tag("layer", "-1") + tag("level", "-3;-2;-1"));
+    const CityModel city = importOsm(writeOsm("underground.osm", body), {});
+    ASSERT_EQ(city.buildings.size(), 1u);
+    EXPECT_EQ(city.buildings[0].osmId, 100);
+    EXPECT_EQ(countOf(city.dropped, "underground"), 1u);
+}
+
+TEST(OsmImportGeometry, UndergroundPartLeavesItsOutlineAndBridgesStay) {
+    // Outline 100 over a basement garage part (level=-1), which replaces nothing; part 102,
+    // a bridge between buildings from the third storey up, stands.
+    const std::string body =
+        node(1, 1000, 1000) + node(2, 1200, 1000) + node(3, 1200, 1100) + node(4, 1000, 1100) +
+        node(5, 1010, 1010) + node(6, 1190, 1010) + node(7, 1190, 1090) + node(8, 1010, 1090) +
+        node(9, 2000, 1000) + node(10, 2100, 1000) + node(11, 2100, 1030) + node(12, 2000, 1030) +
+        way(100, {1, 2, 3, 4, 1}, tag("building", "apartments")) +
+        way(101, {5, 6, 7, 8, 5}, tag("building:part", "garages") + tag("level", "-1")) +
+        way(102, {9, 10, 11, 12, 9}, tag("building:part", "yes") + tag("building:min_level", "3") +
+                                         tag("building:levels", "4"));
+    const CityModel city = importOsm(writeOsm("underground_part.osm", body), {});
+    ASSERT_EQ(city.buildings.size(), 2u);
+    ASSERT_NE(findBuilding(city, 100), nullptr);
+    ASSERT_NE(findBuilding(city, 102), nullptr);
+    EXPECT_GT(findBuilding(city, 102)->minHeight, 0.0f);
+    EXPECT_EQ(countOf(city.dropped, "part_underground"), 1u);
+    EXPECT_FALSE(city.dropped.contains("underground"));
+}
+
 TEST(OsmImportGeometry, RingsAreCleanedRepairedOrDropped) {
     const std::string body =
         // 200: drawn clockwise, with a doubled node -> cleaned, turned counter-clockwise.
@@ -120,7 +155,7 @@ TEST(OsmImportGeometry, RingsAreCleanedRepairedOrDropped) {
         // 206: centroid outside the bounds.
         node(13, 9000, 1000) + node(14, 9100, 1000) + node(15, 9100, 1100) +
         way(206, {13, 14, 15, 13}, tag("building", "yes")) +
-        // 207: a bad height tag: kept with a seeded height, and counted.
+        // 207: a bad height tag: kept with an estimated height (no tagged neighbours: the table), and counted.
         node(16, 500, 500) + node(17, 600, 500) + node(18, 600, 600) +
         way(207, {16, 17, 18, 16}, tag("building", "yes") + tag("height", "tall"));
     const CityModel city = importOsm(writeOsm("rings.osm", body), {});
@@ -140,7 +175,7 @@ TEST(OsmImportGeometry, RingsAreCleanedRepairedOrDropped) {
     EXPECT_EQ(countOf(city.dropped, "incomplete_geometry"), 1u);
     EXPECT_EQ(countOf(city.dropped, "outside_bbox"), 1u);
     ASSERT_NE(findBuilding(city, 207), nullptr);
-    EXPECT_EQ(findBuilding(city, 207)->heightSource, HeightSource::Seeded);
+    EXPECT_EQ(findBuilding(city, 207)->heightSource, HeightSource::TypeTable);
     EXPECT_EQ(countOf(city.repaired, "bad_height_tag"), 1u);
     EXPECT_EQ(countOf(city.dropped, "bad_height_tag"), 0u) << "a kept building is not dropped";
     EXPECT_EQ(city.buildings.size(), 3u);

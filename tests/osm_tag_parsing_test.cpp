@@ -5,6 +5,8 @@
 #include "osm/street_tags.h"
 #include "osm/tag_parsing.h"
 
+#include "tag_map.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,17 +16,7 @@
 
 using namespace urbis;
 
-namespace {
-
-/// A TagLookup over a map, as tests write tags.
-TagLookup tagsOf(const std::map<std::string, std::string>& tags) {
-    return [&tags](const char* key) -> const char* {
-        const auto it = tags.find(key);
-        return it == tags.end() ? nullptr : it->second.c_str();
-    };
-}
-
-} // namespace
+using test::tagsOf;
 
 TEST(TagParsing, LengthWithUnits) {
     const std::pair<const char*, double> cases[] = {
@@ -96,7 +88,7 @@ TEST(ColourTable, NamesAndHexAreLinear) {
     EXPECT_NEAR(linearFromSrgb(0.5f), 0.2140411f, 1e-6);
 }
 
-TEST(BuildingTags, HeightFromTagLevelsOrSeed) {
+TEST(BuildingTags, HeightFromTagOrLevelsElseLeftToEstimate) {
     ImportOptions options;
     std::map<std::string, uint64_t> issues;
     const std::map<std::string, std::string> tagged{{"building", "office"}, {"height", "40'"}, {"min_height", "3 m"}};
@@ -115,44 +107,48 @@ TEST(BuildingTags, HeightFromTagLevelsOrSeed) {
     EXPECT_EQ(b.roofShape, RoofShape::Gabled);
     EXPECT_TRUE(issues.empty());
 
-    const std::map<std::string, std::string> untagged{{"building", "yes"}};
+    // Untagged: a placeholder one storey under the roof, for estimateHeights to replace.
+    const std::map<std::string, std::string> untagged{{"building", "yes"}, {"roof:height", "5"}};
     const Building c1 = buildingFromTags(tagsOf(untagged), options, 12345, issues);
     const Building c2 = buildingFromTags(tagsOf(untagged), options, 12345, issues);
     const Building d = buildingFromTags(tagsOf(untagged), options, 12346, issues);
-    EXPECT_EQ(c1.heightSource, HeightSource::Seeded);
-    EXPECT_EQ(c1.height, c2.height);
+    EXPECT_EQ(c1.heightSource, HeightSource::TypeTable);
+    EXPECT_FALSE(isTagged(c1.heightSource));
+    EXPECT_FLOAT_EQ(c1.height, 5.0f + options.metresPerLevel);
+    EXPECT_FLOAT_EQ(c1.roofHeight, 5.0f);
     EXPECT_EQ(c1.seed, c2.seed);
     EXPECT_NE(c1.seed, d.seed);
-    EXPECT_NE(c1.height, d.height);
-    EXPECT_GE(c1.height, options.minBuildingHeight);
-    EXPECT_LE(c1.height, options.maxBuildingHeight);
 }
 
-TEST(BuildingTags, BadHeightIsCountedAndSeeded) {
+TEST(BuildingTags, BadHeightIsCountedAndLeftToEstimate) {
     ImportOptions options;
     for (const char* bad : {"-5", "1e30", "NaN", "tall", "0"}) {
         std::map<std::string, uint64_t> issues;
         const std::map<std::string, std::string> tags{{"building", "yes"}, {"height", bad}};
         const Building b = buildingFromTags(tagsOf(tags), options, 1, issues);
         EXPECT_EQ(issues["bad_height_tag"], 1u) << bad;
-        EXPECT_EQ(b.heightSource, HeightSource::Seeded) << bad;
+        EXPECT_EQ(b.heightSource, HeightSource::TypeTable) << bad;
         EXPECT_TRUE(std::isfinite(b.height)) << bad;
     }
 }
 
-TEST(BuildingTags, ColoursFromTagMaterialOrType) {
+TEST(BuildingTags, ColoursFromTagOrMaterialElseUntagged) {
     ImportOptions options;
     std::map<std::string, uint64_t> issues;
     const std::map<std::string, std::string> tagged{{"building", "yes"}, {"building:colour", "white"},
-                                                    {"roof:colour", "#800000"}};
+                                                    {"roof:colour", "#800000"}, {"roof:material", "slate"},
+                                                    {"building:material", "brick"}};
     const Building a = buildingFromTags(tagsOf(tagged), options, 1, issues);
     EXPECT_FLOAT_EQ(a.wallColour.g, 1.0f);
     EXPECT_NEAR(a.roofColour.r, linearFromSrgb(128.0f / 255.0f), 1e-6);
-    const std::map<std::string, std::string> brick{{"building", "church"}, {"building:material", "brick"}};
+    EXPECT_TRUE(a.wallColourTagged && a.roofColourTagged);
+    const std::map<std::string, std::string> brick{{"building", "church"}, {"building:material", "brick"},
+                                                   {"roof:material", "thatch-ish"}};
     const Building b = buildingFromTags(tagsOf(brick), options, 1, issues);
     EXPECT_EQ(b.material, BuildingMaterial::Brick);
     EXPECT_FLOAT_EQ(b.wallColour.r, materialColour(BuildingMaterial::Brick)->r);
-    EXPECT_FLOAT_EQ(b.roofColour.g, defaultColours(BuildingType::Religious).roof.g);
+    EXPECT_TRUE(b.wallColourTagged);
+    EXPECT_FALSE(b.roofColourTagged); // an unlisted material leaves the roof to the palette
     const std::map<std::string, std::string> bad{{"building", "yes"}, {"building:colour", "sky"}};
     buildingFromTags(tagsOf(bad), options, 1, issues);
     EXPECT_EQ(issues["bad_colour_tag"], 1u);

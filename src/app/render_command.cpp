@@ -35,7 +35,12 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     cmd->add_option("--seed", o.settings.seed, "Seed of the city and of the sampler")->capture_default_str();
     cmd->add_option("--threads", o.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
     cmd->add_option("--buildings", o.buildings, "Buildings in the generated city")->check(CLI::Range(uint64_t(1), uint64_t(5000000)))->capture_default_str();
-    cmd->add_option("--building-height-range", o.heightRange, "MIN:MAX metres for buildings without height tags");
+    const LayoutParams layout;
+    cmd->add_option("--building-height-range", o.heightRange,
+                    "MIN:MAX metres, seeded uniform, for OSM buildings without height or levels tags (without it "
+                    "their heights are estimated from tagged neighbours of their type and a table of types) and "
+                    "for the generated city (default " + std::to_string(int(layout.minBuildingHeight)) + ":" +
+                        std::to_string(int(layout.maxBuildingHeight)) + ")");
     cmd->add_option("--metres-per-level", o.metresPerLevel, "Storey height for building:levels")->check(CLI::Range(1.0, 20.0))->capture_default_str();
     cmd->add_option("--bbox", o.bbox, "Crop OSM to MINLON,MINLAT,MAXLON,MAXLAT (default: the file's header box)");
     cmd->add_option("--camera", o.camera, "X,Y,Z,TX,TY,TZ: position and target in world metres (x east, y up, z south)");
@@ -98,7 +103,7 @@ CityModel loadCity(const RenderOptions& o) {
     ImportOptions params;
     params.seed = o.settings.seed;
     params.metresPerLevel = o.metresPerLevel;
-    parseHeightRange(o.heightRange, params.minBuildingHeight, params.maxBuildingHeight);
+    if (float lo = 0, hi = 0; parseHeightRange(o.heightRange, lo, hi)) params.untaggedHeightRange = {{lo, hi}};
     params.bbox = bbox;
     return importOsm(o.osmFile, params);
 }

@@ -20,7 +20,7 @@ struct RenderOptions {
     RenderSettings settings;
     unsigned threads = 0;             ///< 0: all cores
     uint64_t buildings = 400;         ///< size of the generated city
-    std::string heightRange;          ///< "min:max" metres for buildings without height tags
+    std::string heightRange;          ///< "min:max" metres for untagged buildings; empty: estimated (OSM) or the layout default
     std::string bbox;                 ///< "minLon,minLat,maxLon,maxLat"
     std::string camera;               ///< "x,y,z,tx,ty,tz" world metres
     std::string cameraGeo;            ///< "lon,lat,altitude,heading,pitch"

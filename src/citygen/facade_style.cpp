@@ -16,14 +16,19 @@ struct TypeRow {
     bool shopFront;
 };
 
+// Balconies only where people live (homes, flats, hotels): never on churches, towers, halls,
+// offices, shops or schools. Generic (`building=yes` whose use tags name no type, see
+// buildingTypeFromTags) gets none either: it covers church towers, offices and sheds as often
+// as flats, and a balcony on a spire looks wrong where a missing one on a block of flats
+// goes unnoticed.
 constexpr TypeRow kRows[] = {
     // type                      facade floor  slot  frac  winH  sill  curtain balcony shop
-    {BuildingType::Generic,      true,  3.2f, 3.0f, 0.45f, 1.5f, 0.9f, 0.0f,  0.2f,  false},
+    {BuildingType::Generic,      true,  3.2f, 3.0f, 0.45f, 1.5f, 0.9f, 0.0f,  0.0f,  false},
     {BuildingType::Residential,  true,  3.0f, 3.0f, 0.45f, 1.5f, 0.9f, 0.0f,  0.5f,  false},
     {BuildingType::House,        true,  3.0f, 3.5f, 0.40f, 1.3f, 0.9f, 0.0f,  0.1f,  false},
     {BuildingType::Apartments,   true,  3.0f, 3.0f, 0.45f, 1.5f, 0.9f, 0.0f,  0.6f,  false},
     {BuildingType::Commercial,   true,  3.6f, 3.0f, 0.60f, 1.9f, 0.8f, 0.4f,  0.0f,  true},
-    {BuildingType::Retail,       true,  3.6f, 3.2f, 0.55f, 1.7f, 0.9f, 0.0f,  0.1f,  true},
+    {BuildingType::Retail,       true,  3.6f, 3.2f, 0.55f, 1.7f, 0.9f, 0.0f,  0.0f,  true},
     {BuildingType::Office,       true,  3.6f, 2.6f, 0.60f, 1.9f, 0.8f, 0.7f,  0.0f,  false},
     {BuildingType::Industrial,   true,  4.5f, 4.0f, 0.60f, 1.2f, 2.6f, 0.0f,  0.0f,  false},
     {BuildingType::Warehouse,    true,  4.5f, 4.0f, 0.60f, 1.2f, 2.6f, 0.0f,  0.0f,  false},

@@ -24,7 +24,8 @@ struct FacadeStyle {
 
 /// The facade style of `building`, from its type, material and levels, varied by its seed: glazed
 /// curtain walls on glass office and commercial towers, shop windows on retail and commercial
-/// ground floors, balconies on some apartment blocks and hotels, high windows on sheds and halls.
+/// ground floors, balconies on some homes, apartment blocks and hotels (never elsewhere), high
+/// windows on sheds and halls.
 FacadeStyle facadeStyleOf(const Building& building);
 
 } // namespace urbis

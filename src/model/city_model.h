@@ -47,8 +47,14 @@ enum class BuildingMaterial : uint8_t {
     Unknown, Brick, Concrete, Glass, Metal, Plaster, Stone, Wood, Sandstone, Timber
 };
 
-/// Where a building's height came from (how much to trust it).
-enum class HeightSource : uint8_t { HeightTag, Levels, Seeded };
+/// Where a building's height came from, most trusted first: its `height` tag; its
+/// `building:levels`; the median of tagged buildings of its type nearby; the table of typical
+/// heights by type and region; or the explicit seeded range (`--building-height-range`).
+/// The last three are estimates (osm/height_estimate.h).
+enum class HeightSource : uint8_t { HeightTag, Levels, NearbyMedian, TypeTable, Range };
+
+/// Whether the height came from the building's own tags rather than an estimate.
+inline bool isTagged(HeightSource source) { return source == HeightSource::HeightTag || source == HeightSource::Levels; }
 
 struct Building {
     int64_t osmId = 0;            ///< way id, or relation id (negative) for multipolygons; 0 if generated
@@ -61,7 +67,7 @@ struct Building {
     int levels = -1;              ///< building:levels above ground, -1 if unknown
     int minLevel = 0;
     int roofLevels = 0;
-    HeightSource heightSource = HeightSource::Seeded;
+    HeightSource heightSource = HeightSource::TypeTable;
     RoofShape roofShape = RoofShape::Flat;
     float roofDirection = -1.0f;  ///< degrees clockwise from north, -1 if untagged
     bool roofAcross = false;      ///< roof:orientation=across: ridge across the longest side
@@ -69,6 +75,8 @@ struct Building {
     BuildingMaterial material = BuildingMaterial::Unknown;
     Rgb wallColour;
     Rgb roofColour{0.35f, 0.33f, 0.32f};
+    bool wallColourTagged = false; ///< wallColour from building:colour or building:material, else a palette's
+    bool roofColourTagged = false; ///< roofColour from roof:colour or roof:material, else a palette's
     uint32_t seed = 0;            ///< per-building seed for everything procedural
 };
 

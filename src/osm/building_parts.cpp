@@ -1,42 +1,15 @@
 #include "osm/building_parts.h"
 
+#include "osm/cell_grid.h"
 #include "osm/polygon_ops.h"
 
 #include <algorithm>
-#include <cmath>
-#include <unordered_map>
 
 namespace urbis {
 
 namespace {
 
 constexpr double kCell = 64.0; // m, grid cell of the outline index
-
-/// Outline indices by grid cell.
-class OutlineGrid {
-public:
-    void insert(uint32_t index, const std::array<Vec2d, 2>& box) {
-        forCells(box, [&](uint64_t key) { cells_[key].push_back(index); });
-    }
-    /// Calls f(index) for each outline in the cells that `box` touches (an outline may repeat).
-    template <typename F>
-    void query(const std::array<Vec2d, 2>& box, F&& f) const {
-        forCells(box, [&](uint64_t key) {
-            if (const auto it = cells_.find(key); it != cells_.end())
-                for (uint32_t index : it->second) f(index);
-        });
-    }
-
-private:
-    template <typename F>
-    static void forCells(const std::array<Vec2d, 2>& box, F&& f) {
-        const auto cell = [](double v) { return int64_t(std::floor(v / kCell)); };
-        for (int64_t x = cell(box[0].x); x <= cell(box[1].x); ++x)
-            for (int64_t y = cell(box[0].y); y <= cell(box[1].y); ++y)
-                f(uint64_t(x) << 32 ^ uint64_t(uint32_t(y)));
-    }
-    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
-};
 
 bool holds(const Polygon& outline, Vec2d p) {
     if (!contains(outline.outer, p)) return false;
@@ -53,7 +26,7 @@ bool overlaps(const std::array<Vec2d, 2>& a, const std::array<Vec2d, 2>& b) {
 void replaceOutlinesByParts(std::vector<Building>& buildings, const GeosContext& geos,
                             ReasonLog& dropped) {
     if (std::none_of(buildings.begin(), buildings.end(), [](const Building& b) { return b.isPart; })) return;
-    OutlineGrid grid;
+    CellGrid grid(kCell);
     std::vector<std::array<Vec2d, 2>> boxes(buildings.size());
     for (uint32_t i = 0; i < buildings.size(); ++i) {
         boxes[i] = bounds(buildings[i].footprint.outer);

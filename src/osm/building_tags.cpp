@@ -1,5 +1,6 @@
 #include "osm/building_tags.h"
 
+#include "osm/building_use.h"
 #include "osm/colour_table.h"
 #include "osm/tag_parsing.h"
 
@@ -72,10 +73,10 @@ Building buildingFromTags(const TagLookup& tag, const ImportOptions& options, in
         b.height = float(*levels) * perLevel + roofGuess;
         b.heightSource = HeightSource::Levels;
     } else {
-        const float u = float(objectSeed(options.seed ^ 0x5bd1e995u, osmId)) * 0x1p-32f;
-        b.height = b.minHeight + options.minBuildingHeight +
-                   u * (options.maxBuildingHeight - options.minBuildingHeight);
-        b.heightSource = HeightSource::Seeded;
+        // Neighbours and region are unknown until the whole file is read: estimateHeights
+        // replaces this one storey under the roof, which only keeps a tagged roof unclamped.
+        b.height = b.minHeight + roofGuess + perLevel;
+        b.heightSource = HeightSource::TypeTable;
     }
     if (b.minHeight >= b.height) {
         ++issues["bad_min_height_tag"];
@@ -91,20 +92,19 @@ Building buildingFromTags(const TagLookup& tag, const ImportOptions& options, in
     }
     if (const char* orientation = tag("roof:orientation")) b.roofAcross = std::string_view(orientation) == "across";
 
-    const char* type = tag("building");
-    if (!type) type = tag("building:part");
-    b.type = type ? parseBuildingType(type) : BuildingType::Generic;
+    b.type = buildingTypeFromTags(tag);
     const char* material = tag("building:material");
     b.material = material ? parseMaterial(material) : BuildingMaterial::Unknown;
 
-    const BuildingColours defaults = defaultColours(b.type);
-    b.wallColour = materialColour(b.material).value_or(defaults.wall);
-    if (const char* roofMaterial = tag("roof:material"))
-        b.roofColour = roofMaterialColour(roofMaterial).value_or(defaults.roof);
-    else
-        b.roofColour = defaults.roof;
-    if (const auto wall = readTag(tag, "building:colour", parseColour, "bad_colour_tag", issues)) b.wallColour = *wall;
-    if (const auto roofColour = readTag(tag, "roof:colour", parseColour, "bad_colour_tag", issues)) b.roofColour = *roofColour;
+    // Colours no tag sets are left to paintUntaggedBuildings, which knows the city's region.
+    std::optional<Rgb> wallTagged = materialColour(b.material), roofTagged;
+    if (const char* roofMaterial = tag("roof:material")) roofTagged = roofMaterialColour(roofMaterial);
+    if (const auto c = readTag(tag, "building:colour", parseColour, "bad_colour_tag", issues)) wallTagged = c;
+    if (const auto c = readTag(tag, "roof:colour", parseColour, "bad_colour_tag", issues)) roofTagged = c;
+    b.wallColourTagged = wallTagged.has_value();
+    b.roofColourTagged = roofTagged.has_value();
+    b.wallColour = wallTagged.value_or(b.wallColour);
+    b.roofColour = roofTagged.value_or(b.roofColour);
     return b;
 }
 

@@ -16,11 +16,12 @@ uint32_t objectSeed(uint32_t seed, int64_t osmId);
 
 /// Every Building field except footprint and isPart, from the tags of a building or a
 /// building:part (metres, linear colours).
-/// Height: `height`, else (`building:levels` + roof) x metresPerLevel, else a value seeded
-/// by (seed, osmId) uniform in [minBuildingHeight, maxBuildingHeight] above the base.
+/// Height: `height`, else (`building:levels` + roof) x metresPerLevel, else a placeholder
+/// marked HeightSource::TypeTable that estimateHeights (osm/height_estimate.h) replaces.
 /// Base: `min_height`, else `building:min_level` x metresPerLevel. Roof height:
 /// `roof:height`, else `roof:levels` x metresPerLevel, else one level for pitched shapes.
-/// Colours: the colour tag, else the material's colour, else the type's default.
+/// Colours: the colour tag, else the material's colour (wallColourTagged, roofColourTagged);
+/// else left for paintUntaggedBuildings (building_palette.h).
 /// Unusable tags are ignored and counted in `issues` ("bad_height_tag", ...).
 Building buildingFromTags(const TagLookup& tag, const ImportOptions& options, int64_t osmId,
                           std::map<std::string, uint64_t>& issues);

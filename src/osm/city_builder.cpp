@@ -16,8 +16,9 @@ class Builder {
 public:
     Builder(const GeoBox& box, CityModel& city) : box_(box), projection_(box.centre()), city_(city) {}
 
-    /// Projects, checks and repairs one polygon of object `id`; nullptr when usable, else the drop reason.
-    const char* makePolygon(const GeoPolygon& g, PolygonRole role, OsmRef id, Polygon& out) {
+    /// Projects, checks and repairs one polygon; nullptr when usable, else the drop reason.
+    /// `repaired` tells whether GEOS had to make it valid.
+    const char* makePolygon(const GeoPolygon& g, Polygon& out, bool& repaired) {
         out.outer = ring(g.outer);
         if (out.outer.size() < 3) return "degenerate_footprint";
         if (!box_.contains(centroidInDegrees(g.outer))) return "outside_bbox";
@@ -26,7 +27,7 @@ public:
         orient(out);
         const Validity validity = geos_.makeValid(out);
         if (validity == Validity::Invalid) return "self_intersecting";
-        if (validity == Validity::Repaired) record(city_.repaired, dropKey(role, "made_valid"), id);
+        repaired = validity == Validity::Repaired;
         if (area(out) < kMinArea) return "too_small";
         return nullptr;
     }
@@ -41,10 +42,16 @@ public:
         bool kept = false;
         for (const GeoPolygon& g : raw.polygons) {
             Building b = raw.attributes;
-            if (const char* reason = makePolygon(g, role, id, b.footprint)) {
+            // Underground objects are counted only where they would otherwise stand, so that
+            // one outside the box still counts as outside_bbox.
+            bool repaired = false;
+            const char* reason = makePolygon(g, b.footprint, repaired);
+            if (!reason && raw.underground) reason = "underground";
+            if (reason) {
                 record(city_.dropped, dropKey(role, reason), id);
                 continue;
             }
+            if (repaired) record(city_.repaired, dropKey(role, "made_valid"), id);
             city_.buildings.push_back(std::move(b));
             kept = true;
         }
@@ -60,10 +67,13 @@ public:
         }
         for (const GeoPolygon& g : raw.polygons) {
             Area a = raw.attributes;
-            if (const char* reason = makePolygon(g, PolygonRole::Area, id, a.polygon))
+            bool repaired = false;
+            if (const char* reason = makePolygon(g, a.polygon, repaired)) {
                 record(city_.dropped, dropKey(PolygonRole::Area, reason), id);
-            else
-                city_.areas.push_back(std::move(a));
+                continue;
+            }
+            if (repaired) record(city_.repaired, dropKey(PolygonRole::Area, "made_valid"), id);
+            city_.areas.push_back(std::move(a));
         }
     }
 

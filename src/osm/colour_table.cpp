@@ -11,13 +11,6 @@ namespace urbis {
 
 namespace {
 
-/// Linear colour of a packed sRGB 0xRRGGBB value.
-Rgb fromSrgbHex(uint32_t rgb) {
-    return {linearFromSrgb(float((rgb >> 16) & 0xff) / 255.0f),
-            linearFromSrgb(float((rgb >> 8) & 0xff) / 255.0f),
-            linearFromSrgb(float(rgb & 0xff) / 255.0f)};
-}
-
 // CSS Color 3 names (https://www.w3.org/TR/css-color-3/, as OSM colour tags use them), plus
 // OSM's own cream, light_brown, dark_brown, brick_red and yellow-brown; sRGB, sorted by
 // name for binary search.
@@ -74,21 +67,6 @@ constexpr std::array<std::pair<std::string_view, uint32_t>, 152> kNamedColours =
     {"white", 0xffffff}, {"whitesmoke", 0xf5f5f5}, {"yellow", 0xffff00},
     {"yellowbrown", 0xb8860b}, {"yellowgreen", 0x9acd32}}};
 
-struct TypeColours {
-    BuildingType type;
-    uint32_t wall, roof; // sRGB
-};
-constexpr std::array<TypeColours, 17> kTypeColours = {{
-    {BuildingType::Generic, 0xd8d2c8, 0x6b6560},     {BuildingType::Residential, 0xe3d6c0, 0x8a4b3a},
-    {BuildingType::House, 0xeadfcb, 0x9a4a35},       {BuildingType::Apartments, 0xdcd0bc, 0x6b6560},
-    {BuildingType::Commercial, 0xc9ccd1, 0x5f6266}, {BuildingType::Retail, 0xd6cfc4, 0x5f6266},
-    {BuildingType::Office, 0xaeb8c2, 0x55595e},     {BuildingType::Industrial, 0xb8b4ac, 0x7a7d80},
-    {BuildingType::Warehouse, 0xb0aca2, 0x85878a},  {BuildingType::Religious, 0xd9cbb0, 0x5d6e66},
-    {BuildingType::Civic, 0xd8cfbf, 0x6b6560},      {BuildingType::School, 0xc98f6b, 0x6b6560},
-    {BuildingType::Hospital, 0xe8e8e4, 0x8a8d90},   {BuildingType::Hotel, 0xd9d2c4, 0x5f6266},
-    {BuildingType::Garage, 0xbfbab2, 0x707070},     {BuildingType::Shed, 0x9c7a58, 0x5a4a3c},
-    {BuildingType::Roof, 0xb0b0b0, 0x808080}}};
-
 constexpr std::array<std::pair<BuildingMaterial, uint32_t>, 9> kMaterialColours = {{
     {BuildingMaterial::Brick, 0x9c4a32}, {BuildingMaterial::Concrete, 0xb5b2ab},
     {BuildingMaterial::Glass, 0x6f8fa6}, {BuildingMaterial::Metal, 0x9ea3a8},
@@ -96,10 +74,17 @@ constexpr std::array<std::pair<BuildingMaterial, uint32_t>, 9> kMaterialColours 
     {BuildingMaterial::Wood, 0x8b6a48}, {BuildingMaterial::Sandstone, 0xd2b98b},
     {BuildingMaterial::Timber, 0xe8e0d0}}};
 
-constexpr std::array<std::pair<std::string_view, uint32_t>, 10> kRoofMaterialColours = {{
-    {"roof_tiles", 0x9a4a35}, {"tile", 0x9a4a35}, {"slate", 0x4a4e55}, {"metal", 0x8e9399},
-    {"copper", 0x6fa58c}, {"concrete", 0xa9a69f}, {"tar_paper", 0x3c3c3c},
-    {"asphalt", 0x3c3c3c}, {"glass", 0x7f9db3}, {"thatch", 0xb39a62}}};
+// roof:material values (https://wiki.openstreetmap.org/wiki/Key:roof:material, and the
+// spellings mappers use beside them), as weathered surfaces look from the street.
+constexpr std::array<std::pair<std::string_view, uint32_t>, 28> kRoofMaterialColours = {{
+    {"roof_tiles", 0x8e4b38}, {"tile", 0x8e4b38}, {"tiles", 0x8e4b38}, {"clay", 0x8e4b38},
+    {"slate", 0x4a4e55}, {"metal", 0x8e9399}, {"metal_sheet", 0x8e9399}, {"zinc", 0x8c9296},
+    {"lead", 0x6e7378}, {"copper", 0x6fa58c}, {"concrete", 0xa9a69f}, {"gravel", 0x9a958c},
+    {"tar_paper", 0x3c3c3c}, {"asphalt", 0x3c3c3c}, {"bitumen", 0x3c3c3c},
+    {"asphalt_shingle", 0x55524e}, {"glass", 0x7f9db3}, {"acrylic_glass", 0x8fa8b8},
+    {"grass", 0x5d7a3e}, {"plants", 0x5d7a3e}, {"eternit", 0x8a8c8a}, {"asbestos", 0x9a9a94},
+    {"thatch", 0xb39a62}, {"stone", 0x8e8a80}, {"wood", 0x7a5e44}, {"plastic", 0xb8b8b4},
+    {"membrane", 0xc8c8c2}, {"solar_panels", 0x27303c}}};
 
 int hexDigit(char c) {
     if (c >= '0' && c <= '9') return c - '0';
@@ -127,6 +112,12 @@ float linearFromSrgb(float encoded) {
     return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
+Rgb fromSrgbHex(uint32_t rgb) {
+    return {linearFromSrgb(float((rgb >> 16) & 0xff) / 255.0f),
+            linearFromSrgb(float((rgb >> 8) & 0xff) / 255.0f),
+            linearFromSrgb(float(rgb & 0xff) / 255.0f)};
+}
+
 std::optional<Rgb> parseColour(std::string_view value) {
     if (!value.empty() && value.front() == '#') return parseHex(value.substr(1));
     std::string name;
@@ -136,12 +127,6 @@ std::optional<Rgb> parseColour(std::string_view value) {
                                      [](const auto& entry, std::string_view key) { return entry.first < key; });
     if (it == kNamedColours.end() || it->first != name) return std::nullopt;
     return fromSrgbHex(it->second);
-}
-
-BuildingColours defaultColours(BuildingType type) {
-    for (const TypeColours& c : kTypeColours)
-        if (c.type == type) return {fromSrgbHex(c.wall), fromSrgbHex(c.roof)};
-    return {fromSrgbHex(kTypeColours[0].wall), fromSrgbHex(kTypeColours[0].roof)};
 }
 
 std::optional<Rgb> materialColour(BuildingMaterial material) {

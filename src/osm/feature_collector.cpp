@@ -3,6 +3,7 @@
 #include "osm/building_tags.h"
 #include "osm/nature_tags.h"
 #include "osm/street_tags.h"
+#include "osm/underground_tags.h"
 
 #include <algorithm>
 #include <cstring>
@@ -135,7 +136,7 @@ void FeatureCollector::addPolygonFeature(PolygonRole role, const osmium::TagList
         out_.areas.push_back(std::move(a));
         return;
     }
-    RawBuilding b{{}, std::move(polygons), problem, {}};
+    RawBuilding b{{}, std::move(polygons), problem, {}, isUnderground(lookup)};
     b.attributes = buildingFromTags(lookup, options_, osmId, b.tagIssues);
     b.attributes.isPart = role == PolygonRole::Part;
     out_.buildings.push_back(std::move(b));

@@ -37,7 +37,7 @@ private:
 /// ways) and assembled multipolygon areas, with node locations already set.
 class FeatureCollector : public osmium::handler::Handler {
 public:
-    /// Collects into `out`, reading tags with `options` (seeded heights).
+    /// Collects into `out`, reading tags with `options` (metres per level, building seeds).
     FeatureCollector(const ImportOptions& options, RawFeatures& out);
     /// Street lamps and trees; extends the data extent.
     void node(const osmium::Node& node);

@@ -80,7 +80,9 @@ nlohmann::json inspectJson(const CityModel& city, bool ids) {
     j["water"] = countAreas(AreaKind::Water);
     j["heights"] = {{"from_height_tag", countHeights(HeightSource::HeightTag)},
                     {"from_levels", countHeights(HeightSource::Levels)},
-                    {"seeded", countHeights(HeightSource::Seeded)}};
+                    {"from_nearby_median", countHeights(HeightSource::NearbyMedian)},
+                    {"from_type_table", countHeights(HeightSource::TypeTable)},
+                    {"from_range", countHeights(HeightSource::Range)}};
     nlohmann::json droppedIds, repairedIds;
     j["dropped"] = countsOf(city.dropped, ids, droppedIds);
     j["repaired"] = countsOf(city.repaired, ids, repairedIds);

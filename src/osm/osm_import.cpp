@@ -1,7 +1,9 @@
 #include "osm/osm_import.h"
 
 #include "model/input_error.h"
+#include "osm/building_palette.h"
 #include "osm/city_builder.h"
+#include "osm/height_estimate.h"
 #include "osm/osm_reader.h"
 
 #include <algorithm>
@@ -21,8 +23,8 @@ constexpr double kExtentPadding = 1e-6; // degrees, about 0.1 m
 }
 
 void checkOptions(const std::string& path, const ImportOptions& options) {
-    if (!(options.minBuildingHeight > 0.0f && options.minBuildingHeight <= options.maxBuildingHeight &&
-          options.maxBuildingHeight <= 1000.0f))
+    if (const auto& range = options.untaggedHeightRange;
+        range && !((*range)[0] > 0.0f && (*range)[0] <= (*range)[1] && (*range)[1] <= 1000.0f))
         fail(path, "building height range must satisfy 0 < min <= max <= 1000 m", FailureKind::Usage);
     if (!(options.metresPerLevel > 0.0f && options.metresPerLevel < 20.0f))
         fail(path, "metres per level must lie in (0, 20)", FailureKind::Usage);
@@ -69,9 +71,11 @@ CityModel importOsm(const std::string& path, const ImportOptions& options) {
     if (header.valid()) city.headerBox = {true, header.minLon, header.minLat, header.maxLon, header.maxLat};
     city.cropBox = {true, box.minLon, box.minLat, box.maxLon, box.maxLat};
     city.cropBoxSource = boxSource;
+    paintUntaggedBuildings(city);
     if (city.buildings.empty())
         fail(path, "no buildings inside the box (" + std::to_string(box.minLon) + "," + std::to_string(box.minLat) +
                        "," + std::to_string(box.maxLon) + "," + std::to_string(box.maxLat) + ")");
+    estimateHeights(city, options);
     city.source = std::filesystem::path(path).filename().string();
     return city;
 }

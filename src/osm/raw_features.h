@@ -42,6 +42,7 @@ struct RawBuilding {
     std::vector<GeoPolygon> polygons;
     const char* problem = nullptr; ///< a drop reason ("incomplete_geometry", ...) or nullptr
     std::map<std::string, uint64_t> tagIssues; ///< counted (as repaired) only if the building is kept
+    bool underground = false;      ///< isUnderground: dropped as "underground" where it would be kept
 };
 
 /// A park, grass, forest or water area; like RawBuilding.

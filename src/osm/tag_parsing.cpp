@@ -14,13 +14,6 @@ namespace {
 constexpr double kMaxLength = 1000.0; // m; no structure is taller
 constexpr double kFoot = 0.3048, kInch = 0.0254;
 
-std::string_view trim(std::string_view s) {
-    const auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
-    while (!s.empty() && isSpace(s.front())) s.remove_prefix(1);
-    while (!s.empty() && isSpace(s.back())) s.remove_suffix(1);
-    return s;
-}
-
 /// Reads the leading decimal number of `s` ("12", "12.5", "12,5", "-5", "1e30") and moves
 /// `s` past it and past the blanks that follow.
 std::optional<double> takeNumber(std::string_view& s) {
@@ -42,11 +35,18 @@ T lookup(const std::array<std::pair<std::string_view, T>, N>& table, std::string
     return fallback;
 }
 
+} // namespace
+
+std::string_view trim(std::string_view s) {
+    const auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    while (!s.empty() && isSpace(s.front())) s.remove_prefix(1);
+    while (!s.empty() && isSpace(s.back())) s.remove_suffix(1);
+    return s;
+}
+
 bool oneOf(std::string_view s, std::initializer_list<std::string_view> names) {
     return std::find(names.begin(), names.end(), s) != names.end();
 }
-
-} // namespace
 
 std::optional<double> parseLength(std::string_view value) {
     std::string_view s = trim(value);

@@ -4,10 +4,17 @@
 
 #include "model/city_model.h"
 
+#include <initializer_list>
 #include <optional>
 #include <string_view>
 
 namespace urbis {
+
+/// `s` without leading and trailing blanks (spaces, tabs, line ends).
+std::string_view trim(std::string_view s);
+
+/// Whether `s` equals one of `names`.
+bool oneOf(std::string_view s, std::initializer_list<std::string_view> names);
 
 /// A length in metres from values like "12", "12 m", "12.5m", "12,5", "40'", "40 ft",
 /// "40'6\"". Negative, NaN, infinite, absurd (> 1000 m) or unparsable values give nullopt.
