@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <random>
+#include <regex>
+#include <set>
 
 using namespace urbis::test;
 namespace fs = std::filesystem;
@@ -140,4 +143,130 @@ TEST(CliOsm, AbsurdTagsDropOrRepairOneBuildingNotTheRender) {
     EXPECT_FALSE(j["dropped"].empty()) << r.out;
     CommandResult render = runUrbis("render --osm absurd.osm --width 32 --height 32 --spp 1", dir);
     EXPECT_EQ(render.exitCode, 0) << render.err;
+}
+
+TEST(CliOsm, CameraInsideABuildingWarnsOrFailsWithStrict) {
+    auto dir = scratchDir("camera_inside");
+    // The box's centre, the local origin, is the building's south-west corner: it covers x 0..20 m, z -20..0.
+    writeFile(dir / "tower.osm", osmXml(squareBuilding(7, "<tag k='height' v='30'/>")));
+    const std::string render = "render --osm tower.osm --width 32 --height 32 --spp 1 --out out.png ";
+    CommandResult inside = runUrbis(render + "--camera 10,5,-10,100,5,-100", dir);
+    EXPECT_EQ(inside.exitCode, 0) << inside.err;
+    EXPECT_NE(inside.err.find("urbis: warning: the camera (10.0, 5.0, -10.0) is inside a building (way 7)"),
+              std::string::npos) << inside.err;
+    CommandResult above = runUrbis(render + "--camera 10,40,-10,100,0,-100", dir);
+    EXPECT_EQ(above.err, "") << "above the roof is not inside";
+    fs::remove(dir / "out.png");
+    CommandResult strict = runUrbis(render + "--strict --camera 10,5,-10,100,5,-100", dir);
+    EXPECT_EQ(strict.exitCode, 2) << strict.err;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+namespace {
+
+/// `inspect --json --ids` of `file` run in `dir`, parsed; fails the test on a non-zero exit.
+nlohmann::json inspectIds(const fs::path& dir, const std::string& file) {
+    CommandResult r = runUrbis("inspect --json --ids '" + file + "'", dir);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return r.exitCode == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+}
+
+/// Buildings are kept by centroid, so the kept geometry may reach this far (degrees) past the box.
+constexpr double kStraddle = 0.005;
+
+/// The kept bounds lie in the header box (up to buildings that straddle it), which is the crop box.
+void expectBoundsInHeaderBox(const nlohmann::json& j) {
+    const nlohmann::json& b = j["bounds"];
+    ASSERT_FALSE(b["header"].is_null()) << "the file has a header box";
+    EXPECT_EQ(b["crop_source"], "header");
+    EXPECT_EQ(b["crop"], b["header"]);
+    EXPECT_GE(b["kept"]["min_lon"].get<double>(), b["header"]["min_lon"].get<double>() - kStraddle);
+    EXPECT_GE(b["kept"]["min_lat"].get<double>(), b["header"]["min_lat"].get<double>() - kStraddle);
+    EXPECT_LE(b["kept"]["max_lon"].get<double>(), b["header"]["max_lon"].get<double>() + kStraddle);
+    EXPECT_LE(b["kept"]["max_lat"].get<double>(), b["header"]["max_lat"].get<double>() + kStraddle);
+    EXPECT_LT(b["kept"]["min_lon"].get<double>(), b["kept"]["max_lon"].get<double>());
+    EXPECT_LT(b["kept"]["min_lat"].get<double>(), b["kept"]["max_lat"].get<double>());
+}
+
+/// Every reason lists ids (n/w/r + digits), no more than its count; no repaired object is also dropped.
+void expectIdsPerReason(const nlohmann::json& j) {
+    std::set<std::string> dropped;
+    for (const char* map : {"dropped", "repaired"})
+        for (const auto& [reason, count] : j[map].items()) {
+            const nlohmann::json& ids = j[std::string(map) + "_ids"][reason];
+            EXPECT_GT(ids.size(), 0u) << map << " " << reason;
+            EXPECT_LE(ids.size(), count.get<size_t>()) << map << " " << reason;
+            for (const nlohmann::json& id : ids) {
+                EXPECT_TRUE(std::regex_match(id.get<std::string>(), std::regex("[nwr][0-9]+"))) << id;
+                if (std::string(map) == "dropped") dropped.insert(id.get<std::string>());
+                else EXPECT_FALSE(dropped.contains(id.get<std::string>())) << id << " is both repaired and dropped";
+            }
+        }
+    for (const char* repair : {"made_valid", "repaired", "bad_height_tag", "bad_levels_tag"})
+        EXPECT_FALSE(j["dropped"].contains(repair)) << repair << " is a repair, not a drop";
+}
+
+} // namespace
+
+TEST(CliOsm, InspectKeptBoundsLieInTheHeaderBox) {
+    auto dir = scratchDir("inspect_bounds");
+    for (const std::string& file : {kVillage, std::string(URBIS_OSMNX_DATA "/West-Oakland.osm.bz2")})
+        expectBoundsInHeaderBox(inspectIds(dir, file));
+    for (const char* name : {"sf_downtown_2023.osm.pbf", "london_city_2020.osm.pbf", "moscow_center_2020.osm.pbf"}) {
+        const fs::path shared = fs::path(URBIS_SHARED_DATA) / name;
+        if (!fs::exists(shared)) {
+            std::cout << "note: skipping " << shared << " (not found)\n";
+            continue;
+        }
+        const nlohmann::json j = inspectIds(dir, shared.string());
+        expectBoundsInHeaderBox(j);
+        expectIdsPerReason(j);
+    }
+    const nlohmann::json cropped = nlohmann::json::parse(
+        runUrbis("inspect --json --bbox 10.069,48.135,10.070,48.136 '" + kVillage + "'", dir).out);
+    EXPECT_EQ(cropped["bounds"]["crop_source"], "bbox");
+    EXPECT_DOUBLE_EQ(cropped["bounds"]["crop"]["min_lon"].get<double>(), 10.069);
+}
+
+TEST(CliOsm, InspectIdsExistInTheFileAndRepairsAreNotDrops) {
+    auto dir = scratchDir("inspect_ids");
+    const nlohmann::json j = inspectIds(dir, kVillage);
+    expectIdsPerReason(j);
+    EXPECT_GT(j["dropped"].size(), 0u);
+    EXPECT_GT(j["repaired"].size(), 0u);
+    const std::string xml = readFile(kVillage);
+    const std::map<char, std::string> element{{'n', "node"}, {'w', "way"}, {'r', "relation"}};
+    for (const char* map : {"dropped_ids", "repaired_ids"})
+        for (const auto& [reason, ids] : j[map].items())
+            for (const nlohmann::json& id : ids) {
+                const std::string name = id.get<std::string>();
+                const std::string tag = "<" + element.at(name[0]) + " id=\"" + name.substr(1) + "\"";
+                EXPECT_NE(xml.find(tag), std::string::npos) << reason << ": " << name << " is not in the file";
+            }
+    expectIdsPerReason(inspectIds(dir, URBIS_OSMNX_DATA "/West-Oakland.osm.bz2"));
+    CommandResult text = runUrbis("inspect --ids '" + kVillage + "'", dir);
+    ASSERT_EQ(text.exitCode, 0);
+    for (const char* line : {"  dropped:\n", "  repaired:\n", "  dropped_ids:\n", "crop_source", "10.068"})
+        EXPECT_NE(text.out.find(line), std::string::npos) << line << " in\n" << text.out;
+}
+
+TEST(CliOsm, EveryReasonIsDocumented) {
+    auto dir = scratchDir("reasons_documented");
+    const std::string docs = readFile(URBIS_EXAMPLES "/../cli.md");
+    ASSERT_FALSE(docs.empty());
+    std::string body = squareBuilding(1, "<tag k='height' v='tall'/><tag k='building:levels' v='many'/>") +
+                       squareBuilding(2, "<tag k='roof:colour' v='sparkly'/>", 5.0);
+    writeFile(dir / "reasons.osm", osmXml(body));
+    for (const std::string& file : {kVillage, std::string(URBIS_OSMNX_DATA "/West-Oakland.osm.bz2"),
+                                   (dir / "reasons.osm").string()}) {
+        CommandResult r = runUrbis("render --width 16 --height 16 --spp 1 --osm '" + file + "' --stats s.json --out o.png", dir);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const nlohmann::json stats = nlohmann::json::parse(readFile(dir / "s.json"));
+        for (const char* map : {"dropped", "repaired"})
+            for (const auto& [reason, n] : stats[map].items()) {
+                const std::string prefixless = reason.rfind("part_", 0) == 0 ? reason.substr(5)
+                                               : reason.rfind("area_", 0) == 0 ? reason.substr(5) : reason;
+                EXPECT_NE(docs.find("`" + prefixless + "`"), std::string::npos) << reason << " is not in docs/cli.md";
+            }
+    }
 }

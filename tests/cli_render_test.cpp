@@ -48,11 +48,11 @@ TEST(CliRender, StatsFileHasTheKeysScriptsCompare) {
     EXPECT_EQ(stats["counts"]["buildings"].get<size_t>() > 0, true);
 }
 
-/// A bad parameter: non-zero exit, one line on stderr naming the problem, no image left behind.
+/// A bad parameter: the usage exit code, one line on stderr naming the problem, no image left behind.
 void expectRejected(const std::string& args, const std::string& mention) {
     auto dir = scratchDir("bad_param");
     CommandResult r = runUrbis(args + " --out out.png", dir);
-    EXPECT_NE(r.exitCode, 0) << args;
+    EXPECT_EQ(r.exitCode, 2) << args << " -> " << r.err;
     EXPECT_NE(r.err.find(mention), std::string::npos) << args << " -> " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "not one line: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << args;
@@ -76,6 +76,6 @@ TEST(CliRender, ImpossibleParametersAreRejected) {
 TEST(CliRender, UnwritableOutputIsAnErrorNotAHalfFile) {
     auto dir = scratchDir("unwritable");
     CommandResult r = runUrbis(kSmall + "--out no/such/folder/x.png", dir);
-    EXPECT_NE(r.exitCode, 0);
+    EXPECT_EQ(r.exitCode, 5);
     EXPECT_NE(r.err.find("no/such/folder/x.png"), std::string::npos) << r.err;
 }

@@ -83,7 +83,8 @@ void expectSame(const CityModel& city) {
         const TwinComparison c = compareTwins(city, street);
         const char* view = street ? "street view" : "aerial view";
         EXPECT_GE(c.sameId, 0.999) << view;
-        EXPECT_GT(c.facadePixels, 0.01) << view << ": the view must show windows";
+        // The aerial view frames the whole city (frameCity), where windows cover about 1 % of it.
+        EXPECT_GT(c.facadePixels, street ? 0.01 : 0.005) << view << ": the view must show windows";
         EXPECT_LT(c.meanRelativeError, kImageTolerance) << view;
     }
 }

@@ -16,7 +16,7 @@ TEST(GpuCli, DeviceCudaRendersOnTheGpuOrFailsInOneLine) {
     auto dir = scratchDir("gpu_cuda");
     CommandResult r = runUrbis(kSmall + "--device cuda --stats stats.json", dir);
     if (!urbis::probeGpu().available) {
-        EXPECT_EQ(r.exitCode, 1);
+        EXPECT_EQ(r.exitCode, 4) << "a device failure";
         EXPECT_EQ(lineCount(r.err), 1u) << r.err;
         EXPECT_NE(r.err.find("--device cuda"), std::string::npos) << r.err;
         EXPECT_FALSE(std::filesystem::exists(dir / "urbis.png"));
@@ -31,9 +31,12 @@ TEST(GpuCli, DeviceCudaRendersOnTheGpuOrFailsInOneLine) {
     EXPECT_GT(stats["rays_per_second"].get<double>(), 0.0);
 }
 
-TEST(GpuCli, DeviceAutoAlwaysRendersAndSaysWhere) {
+TEST(GpuCli, DeviceAutoAlwaysRendersAndSaysWhereWhenVerbose) {
     auto dir = scratchDir("gpu_auto");
-    CommandResult r = runUrbis(kSmall + "--device auto --stats stats.json", dir);
+    CommandResult quiet = runUrbis(kSmall + "--device auto", dir);
+    ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
+    EXPECT_EQ(quiet.err.find("rendering on"), std::string::npos) << "said without --verbose: " << quiet.err;
+    CommandResult r = runUrbis(kSmall + "--device auto --verbose --stats stats.json", dir);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_GT(readFile(dir / "urbis.png").size(), 100u);
     auto stats = nlohmann::json::parse(readFile(dir / "stats.json"));
@@ -75,6 +78,6 @@ TEST(GpuCli, BenchOnCudaWithoutAGpuFailsInOneLine) {
     if (urbis::probeGpu().available) GTEST_SKIP() << "a GPU is present";
     auto dir = scratchDir("gpu_bench_none");
     CommandResult r = runUrbis("bench --device cuda --buildings 10 --width 8 --height 8", dir);
-    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.exitCode, 4) << "a device failure";
     EXPECT_EQ(lineCount(r.err), 1u) << r.err;
 }

@@ -95,3 +95,12 @@ TEST(GeoProjection, DistancesWithinTenthOfAPercentOverTenKilometres) {
         }
     }
 }
+
+TEST(GeoProjection, UnprojectInvertsProject) {
+    const GeoProjection projection(LonLat{-122.41, 37.79});
+    for (LonLat p : {LonLat{-122.41, 37.79}, LonLat{-122.38, 37.80}, LonLat{-122.47, 37.73}, LonLat{-121.9, 38.2}}) {
+        const LonLat back = projection.unproject(projection.project(p));
+        EXPECT_NEAR(back.lon, p.lon, 1e-9);
+        EXPECT_NEAR(back.lat, p.lat, 1e-9);
+    }
+}

@@ -54,11 +54,6 @@ const Extract kExtracts[] = {
     {"NewYork", kShared + "/nyc_queens_village_2016.osm.pbf", false, 50836, 50014, 0.01, 1956, 0, 0, 0, 0},
 };
 
-uint64_t count(const CityModel& city, const char* reason) {
-    const auto it = city.dropped.find(reason);
-    return it == city.dropped.end() ? 0 : it->second;
-}
-
 /// Names the case in test output instead of dumping its bytes.
 void PrintTo(const Extract& e, std::ostream* os) { *os << e.name; }
 
@@ -81,33 +76,33 @@ TEST_P(OsmExtract, CountsMatchOsmium) {
     // Every building object of the file is either kept (perhaps replaced by its parts) or
     // dropped for one reason. Not exact where a multipolygon has several outer rings (each
     // is counted) or a way is both building and building:part (counted as a part).
-    const uint64_t outlines = city.buildings.size() - city.buildingParts() + count(city, "replaced_by_parts");
+    const uint64_t outlines = city.buildings.size() - city.buildingParts() + countOf(city.dropped, "replaced_by_parts");
     uint64_t dropped = 0;
     for (const char* reason : {"outside_bbox", "incomplete_geometry", "unclosed_way", "degenerate_footprint",
                                "self_intersecting", "too_small", "invalid_multipolygon", "underground"})
-        dropped += count(city, reason);
+        dropped += countOf(city.dropped, reason);
     EXPECT_NEAR(double(outlines + dropped), double(e.total), 0.005 * double(e.total));
 
     const uint64_t inside =
-        outlines + count(city, "too_small") + count(city, "self_intersecting") + count(city, "underground");
+        outlines + countOf(city.dropped, "too_small") + countOf(city.dropped, "self_intersecting") + countOf(city.dropped, "underground");
     EXPECT_LE(inside, e.touching);
     EXPECT_GE(double(inside), double(e.touching) * (1.0 - e.straddling));
 
     std::set<int64_t> roadIds;
     for (const Road& r : city.roads) roadIds.insert(r.osmId);
-    EXPECT_EQ(roadIds.size() + count(city, "road_outside_bbox") + count(city, "road_degenerate") +
-                  count(city, "road_incomplete_geometry"),
+    EXPECT_EQ(roadIds.size() + countOf(city.dropped, "road_outside_bbox") + countOf(city.dropped, "road_degenerate") +
+                  countOf(city.dropped, "road_incomplete_geometry"),
               e.highways);
-    EXPECT_EQ(city.lamps.size() + count(city, "lamp_outside_bbox"), e.lamps);
-    EXPECT_EQ(city.trees.size() + count(city, "tree_outside_bbox"), e.trees);
+    EXPECT_EQ(city.lamps.size() + countOf(city.dropped, "lamp_outside_bbox"), e.lamps);
+    EXPECT_EQ(city.trees.size() + countOf(city.dropped, "tree_outside_bbox"), e.trees);
 
     for (const Building& b : city.buildings) {
         ASSERT_GE(b.footprint.outer.size(), 3u);
         ASSERT_GT(b.height, b.minHeight);
         ASSERT_LE(b.height, 1000.0f);
     }
-    EXPECT_EQ(count(city, "underground"), e.underground);
-    EXPECT_EQ(count(city, "part_underground"), e.partsUnderground);
+    EXPECT_EQ(countOf(city.dropped, "underground"), e.underground);
+    EXPECT_EQ(countOf(city.dropped, "part_underground"), e.partsUnderground);
     EXPECT_EQ(summary["buildings"], city.buildings.size());
     EXPECT_TRUE(city.origin.valid);
 }

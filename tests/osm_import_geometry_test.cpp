@@ -101,7 +101,7 @@ TEST(OsmImportGeometry, PartsReplaceTheirOutline) {
     EXPECT_FLOAT_EQ(findBuilding(city, 102)->minHeight, 3.0f);
     ASSERT_NE(findBuilding(city, 103), nullptr);
     EXPECT_FALSE(findBuilding(city, 103)->isPart);
-    EXPECT_EQ(city.dropped.at("replaced_by_parts"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "replaced_by_parts"), 1u);
 }
 
 TEST(OsmImportGeometry, UndergroundBuildingsAreDroppedAndCounted) {
@@ -115,7 +115,7 @@ TEST(OsmImportGeometry, UndergroundBuildingsAreDroppedAndCounted) {
     const CityModel city = importOsm(writeOsm("underground.osm", body), {});
     ASSERT_EQ(city.buildings.size(), 1u);
     EXPECT_EQ(city.buildings[0].osmId, 100);
-    EXPECT_EQ(city.dropped.at("underground"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "underground"), 1u);
 }
 
 TEST(OsmImportGeometry, UndergroundPartLeavesItsOutlineAndBridgesStay) {
@@ -134,7 +134,7 @@ TEST(OsmImportGeometry, UndergroundPartLeavesItsOutlineAndBridgesStay) {
     ASSERT_NE(findBuilding(city, 100), nullptr);
     ASSERT_NE(findBuilding(city, 102), nullptr);
     EXPECT_GT(findBuilding(city, 102)->minHeight, 0.0f);
-    EXPECT_EQ(city.dropped.at("part_underground"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "part_underground"), 1u);
     EXPECT_FALSE(city.dropped.contains("underground"));
 }
 
@@ -165,16 +165,19 @@ TEST(OsmImportGeometry, RingsAreCleanedRepairedOrDropped) {
     EXPECT_GT(signedArea(cleaned), 0.0);
     ASSERT_NE(findBuilding(city, 201), nullptr);
     EXPECT_EQ(findBuilding(city, 201)->footprint.outer.size(), 3u);
-    EXPECT_EQ(city.dropped.at("repaired"), 1u);
+    EXPECT_EQ(countOf(city.repaired, "made_valid"), 1u);
+    EXPECT_EQ(osmRefName(city.repaired.at("made_valid").ids.at(0)), "w201");
     EXPECT_EQ(findBuilding(city, 202), nullptr);
-    EXPECT_EQ(city.dropped.at("too_small"), 1u);
-    EXPECT_EQ(city.dropped.at("degenerate_footprint"), 1u);
-    EXPECT_EQ(city.dropped.at("unclosed_way"), 1u);
-    EXPECT_EQ(city.dropped.at("incomplete_geometry"), 1u);
-    EXPECT_EQ(city.dropped.at("outside_bbox"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "too_small"), 1u);
+    EXPECT_EQ(osmRefName(city.dropped.at("too_small").ids.at(0)), "w202");
+    EXPECT_EQ(countOf(city.dropped, "degenerate_footprint"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "unclosed_way"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "incomplete_geometry"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "outside_bbox"), 1u);
     ASSERT_NE(findBuilding(city, 207), nullptr);
     EXPECT_EQ(findBuilding(city, 207)->heightSource, HeightSource::TypeTable);
-    EXPECT_EQ(city.dropped.at("bad_height_tag"), 1u);
+    EXPECT_EQ(countOf(city.repaired, "bad_height_tag"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "bad_height_tag"), 0u) << "a kept building is not dropped";
     EXPECT_EQ(city.buildings.size(), 3u);
 }
 
@@ -195,10 +198,11 @@ TEST(OsmImportGeometry, RoadsAreClippedLampsAndTreesCropped) {
     ASSERT_EQ(road.centerline.size(), 2u);
     const double kept = road.centerline[1].x - road.centerline[0].x;
     EXPECT_NEAR(kept, 2000e-6 * 111319.5 * std::cos(50.0 * 3.14159265 / 180.0), 1.0); // 10.001 -> 10.003
-    EXPECT_EQ(city.dropped.at("road_outside_bbox"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "road_outside_bbox"), 1u);
     EXPECT_EQ(city.lamps.size(), 1u);
     EXPECT_EQ(city.trees.size(), 1u);
-    EXPECT_EQ(city.dropped.at("tree_outside_bbox"), 1u);
+    EXPECT_EQ(countOf(city.dropped, "tree_outside_bbox"), 1u);
+    EXPECT_EQ(osmRefName(city.dropped.at("tree_outside_bbox").ids.at(0)), "n10");
     EXPECT_TRUE(city.origin.valid);
     EXPECT_NEAR(city.origin.lat, 50.001, 1e-9);
     EXPECT_NEAR(city.origin.lon, 10.0015, 1e-9);

@@ -1,8 +1,11 @@
 #include "app/bench_command.h"
 
+#include "app/memory_limit.h"
+#include "app/output_paths.h"
 #include "app/render_device.h"
 #include "gpu/gpu_backend.h"
 #include "integrators/path_tracer.h"
+#include "film/image.h"
 #include "io/atomic_file.h"
 #include "model/input_error.h"
 
@@ -30,8 +33,8 @@ void addBenchCommand(CLI::App& app, BenchOptions& o) {
     cmd->add_option("--osm", r.osmFile, "OpenStreetMap file (default: the generated city)");
     cmd->add_option("--buildings", r.buildings, "Buildings in the generated city")->check(CLI::Range(uint64_t(1), uint64_t(5000000)))->capture_default_str();
     cmd->add_option("--bbox", r.bbox, "Crop OSM to MINLON,MINLAT,MAXLON,MAXLAT");
-    cmd->add_option("--width", r.settings.width, "Width of the ray batches and the frame")->check(CLI::Range(1, 16384))->capture_default_str();
-    cmd->add_option("--height", r.settings.height, "Height of the ray batches and the frame")->check(CLI::Range(1, 16384))->capture_default_str();
+    cmd->add_option("--width", r.settings.width, "Width of the ray batches and the frame")->check(CLI::Range(1u, kMaxImageSide))->capture_default_str();
+    cmd->add_option("--height", r.settings.height, "Height of the ray batches and the frame")->check(CLI::Range(1u, kMaxImageSide))->capture_default_str();
     cmd->add_option("--spp", r.settings.spp, "Samples per pixel of the timed frame")->check(CLI::Range(1, 1 << 16))->capture_default_str();
     cmd->add_option("--seed", r.settings.seed, "Seed of the city and of the sampler")->capture_default_str();
     cmd->add_option("--sun", r.sun, "ELEVATION,AZIMUTH of the sun in degrees")->capture_default_str();
@@ -41,7 +44,8 @@ void addBenchCommand(CLI::App& app, BenchOptions& o) {
     cmd->add_option("--threads", r.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
     cmd->add_option("--repeats", o.repeats, "Timed runs per measurement (0: 20 on the GPU, 3 on the CPU)")->check(CLI::Range(0, 10000))->capture_default_str();
     cmd->add_option("--warmup", o.warmup, "Untimed runs first (GPU)")->check(CLI::Range(0, 1000))->capture_default_str();
-    cmd->add_option("--json", o.jsonFile, "Write the results as JSON");
+    cmd->add_option("--json", o.jsonFile, "Write the results as JSON (a .json file)");
+    addRunOptions(*cmd, r);
 }
 
 namespace {
@@ -55,6 +59,10 @@ struct RayBatches {
     std::vector<Ray> primary, diffuse, shadow;
     size_t primaryBuildingHits = 0;
 };
+
+/// Host bytes per pixel of the batches: three rays and three flags while they are made, up to two
+/// more rays in the kept diffuse and shadow batches, and a hit and a flag while they are traced.
+constexpr size_t kBenchBytesPerPixel = 5 * sizeof(Ray) + 4 + sizeof(SurfaceHit);
 
 RayBatches makeRays(const Scene& scene, const Camera& camera, const RenderSettings& settings) {
     RayBatches b;
@@ -139,9 +147,13 @@ void runBench(const BenchOptions& o) {
     const RenderOptions& r = o.scene;
     size_t threads = r.threads ? r.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
+    checkOutputPath("--json", o.jsonFile, {".json"});
+    const size_t limit = memoryLimit(r.maxMemory);
+    requireMemory(size_t(r.settings.width) * r.settings.height * kBenchBytesPerPixel + hostFilmBytes(r.settings.width, r.settings.height),
+                  limit, "benchmarking " + std::to_string(r.settings.width) + "x" + std::to_string(r.settings.height) + " rays");
     if (!o.jsonFile.empty()) {
         std::FILE* probe = std::fopen((o.jsonFile + ".tmp").c_str(), "w");
-        if (!probe) throw InputError(o.jsonFile + ": cannot write here");
+        if (!probe) throw InputError(o.jsonFile + ": cannot write here", FailureKind::Output);
         std::fclose(probe);
         std::remove((o.jsonFile + ".tmp").c_str());
     }
@@ -150,17 +162,18 @@ void runBench(const BenchOptions& o) {
     GpuInfo gpu;
     if (device != "cpu") {
         gpu = probeGpu();
-        if (!gpu.available && device == "cuda") throw InputError("--device cuda: " + gpu.reason);
+        if (!gpu.available && device == "cuda") throw InputError("--device cuda: " + gpu.reason, FailureKind::Device);
         device = gpu.available ? "cuda" : "cpu";
     }
     const bool onGpu = device == "cuda";
     const int repeats = o.repeats > 0 ? o.repeats : (onGpu ? 20 : 3);
 
-    PreparedScene prepared = prepareScene(r);
+    PreparedScene prepared = prepareScene(r, limit);
     const Scene& scene = prepared.scene;
     RayBatches batches = makeRays(scene, prepared.camera, r.settings);
     const std::string deviceName = onGpu ? gpu.name : cpuModelName();
-    std::fprintf(stderr, "urbis: benchmarking on %s (%s)\n", deviceName.c_str(), device.c_str());
+    if (r.verbose || r.device == "cuda")
+        std::fprintf(stderr, "urbis: benchmarking on %s (%s)\n", deviceName.c_str(), device.c_str());
 
     std::vector<Row> rows = {{"primary", batches.primary.size(), {}},
                              {"diffuse", batches.diffuse.size(), {}},

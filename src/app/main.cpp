@@ -5,7 +5,29 @@
 #include "model/input_error.h"
 
 #include <cstdio>
+#include <cstring>
 #include <new>
+
+namespace {
+
+/// The help's footer: the exit codes, one per urbis::FailureKind (docs/cli.md has the same table).
+const char* const kExitCodes = "Exit codes:\n"
+                               "  0  success\n"
+                               "  1  bad input file or data (missing, unreadable, malformed, no buildings in the box)\n"
+                               "  2  usage: unknown subcommand or option, bad or missing option value\n"
+                               "  3  out of memory (host or GPU), including refusals before any work\n"
+                               "  4  GPU failure (--device cuda without a usable device, a failed CUDA call)\n"
+                               "  5  an output file cannot be written\n"
+                               "See docs/cli.md for the options, the inspect reasons and these codes.\n";
+
+/// The parser's message, or for a first argument that is no subcommand, one naming it.
+std::string usageMessage(const CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
+    if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-')
+        return std::string("unknown subcommand '") + argv[1] + "' (commands: render, inspect, bench)";
+    return e.what();
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"urbis: ray traces cities from OpenStreetMap, or generated ones.\n\n"
@@ -16,7 +38,9 @@ int main(int argc, char** argv) {
                  "  urbis render --osm city.osm.pbf --camera-geo -122.397,37.789,300,20,-25\n"
                  "  urbis render --device cuda --spp 256 --out gpu.png\n"
                  "  urbis bench --device cuda --buildings 100000 --json bench.json\n"
-                 "  urbis inspect city.osm.pbf --json\n"};
+                 "  urbis inspect city.osm.pbf --json --ids\n"};
+    app.footer(kExitCodes);
+    app.set_version_flag("--version", "urbis " URBIS_VERSION);
     app.require_subcommand(1);
     urbis::RenderOptions render;
     urbis::InspectOptions inspect;
@@ -29,19 +53,17 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) urbis::runRender(render);
         if (app.got_subcommand("inspect")) urbis::runInspect(inspect);
         if (app.got_subcommand("bench")) urbis::runBench(bench);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);  // --help, --help-all, --version
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "urbis: %s (see urbis --help)\n", e.what());
-        return 2;
+        std::fprintf(stderr, "urbis: %s (see urbis --help)\n", usageMessage(app, e, argc, argv).c_str());
+        return int(urbis::FailureKind::Usage);
     } catch (const urbis::InputError& e) {
         std::fprintf(stderr, "urbis: %s\n", e.what());
-        return 1;
+        return int(e.kind());
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "urbis: out of memory (try fewer buildings, a smaller --bbox or a smaller image)\n");
-        return 1;
+        return int(urbis::FailureKind::OutOfMemory);
     }
     return 0;
 }

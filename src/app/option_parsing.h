@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,5 +17,10 @@ std::vector<double> parseNumberList(const std::string& option, const std::string
 /// "MINLON,MINLAT,MAXLON,MAXLAT" in degrees; nullopt for an empty text. Throws InputError on a box
 /// that is malformed, inverted or off the globe.
 std::optional<std::array<double, 4>> parseBbox(const std::string& text);
+
+/// A size in bytes: a number with an optional binary unit K, M, G or T (KiB ... TiB; "KB",
+/// "GiB" and lower case too), e.g. "8G", "512M", "2000000000", "1.5G". Throws a usage
+/// InputError naming `option` on anything else, on zero and on sizes past 2^63.
+size_t parseMemorySize(const std::string& option, const std::string& text);
 
 } // namespace urbis

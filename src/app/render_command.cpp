@@ -1,6 +1,9 @@
 #include "app/render_command.h"
 
+#include "app/camera_checks.h"
+#include "app/memory_limit.h"
 #include "app/option_parsing.h"
+#include "app/output_paths.h"
 #include "app/render_device.h"
 #include "citygen/city_mesher.h"
 #include "cpu/cpu_renderer.h"
@@ -18,8 +21,6 @@
 
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
-#include <cstdio>
 #include <unistd.h>
 
 namespace urbis {
@@ -27,9 +28,9 @@ namespace urbis {
 void addRenderCommand(CLI::App& app, RenderOptions& o) {
     CLI::App* cmd = app.add_subcommand("render", "Path trace a city to a PNG (the generated default world without --osm)");
     cmd->add_option("--osm", o.osmFile, "OpenStreetMap file: .osm, .osm.pbf, .osm.bz2, .osm.gz");
-    cmd->add_option("--out", o.outFile, "PNG to write")->capture_default_str();
-    cmd->add_option("--width", o.settings.width, "Image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
-    cmd->add_option("--height", o.settings.height, "Image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
+    cmd->add_option("--out", o.outFile, "Image to write; the format follows the extension: .png")->capture_default_str();
+    cmd->add_option("--width", o.settings.width, "Image width in pixels")->check(CLI::Range(1u, kMaxImageSide))->capture_default_str();
+    cmd->add_option("--height", o.settings.height, "Image height in pixels")->check(CLI::Range(1u, kMaxImageSide))->capture_default_str();
     cmd->add_option("--spp", o.settings.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20))->capture_default_str();
     cmd->add_option("--seed", o.settings.seed, "Seed of the city and of the sampler")->capture_default_str();
     cmd->add_option("--threads", o.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
@@ -60,9 +61,17 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     cmd->add_option("--wall-tiles", o.wallTiles,
                     "whole, or SLOTSxFLOORS: split each procedural wall into BVH tiles of at most that many cells")
         ->capture_default_str();
-    cmd->add_option("--stats", o.statsFile, "Write counts, memory, timings and rays/s as JSON");
+    cmd->add_option("--stats", o.statsFile, "Write counts, memory, timings and rays/s as JSON (a .json file)");
     cmd->add_option("--device", o.device, "auto (the GPU if usable, else the CPU), cpu or cuda")
         ->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
+    addRunOptions(*cmd, o);
+}
+
+void addRunOptions(CLI::App& cmd, RenderOptions& o) {
+    cmd.add_option("--max-memory", o.maxMemory,
+                   "Host memory the run may take, e.g. 8G, 512M, 2000000000 (default: 80 % of the memory available)");
+    cmd.add_flag("--strict", o.strict, "Treat warnings (a camera inside a building, underground or far away) as errors");
+    cmd.add_flag("--verbose", o.verbose, "Say which device renders and why");
 }
 
 namespace {
@@ -75,23 +84,16 @@ bool parseHeightRange(const std::string& text, float& lo, float& hi) {
     if (text.empty()) return false;
     std::vector<double> v = parseNumberList("--building-height-range", text, ':', 2, 2);
     if (!(v[0] >= 0.0 && v[0] <= v[1] && v[1] <= 1000.0))
-        throw InputError("--building-height-range: need 0 <= MIN <= MAX <= 1000 metres, got '" + text + "'");
+        throw InputError("--building-height-range: need 0 <= MIN <= MAX <= 1000 metres, got '" + text + "'", FailureKind::Usage);
     lo = float(v[0]);
     hi = float(v[1]);
     return true;
 }
 
-/// Fails before any work if an output file's folder does not exist.
-void checkOutputFolder(const std::string& path) {
-    std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!path.empty() && !parent.empty() && !std::filesystem::is_directory(parent))
-        throw InputError(path + ": the folder " + parent.string() + " does not exist");
-}
-
 CityModel loadCity(const RenderOptions& o) {
     std::optional<std::array<double, 4>> bbox = parseBbox(o.bbox);
     if (o.osmFile.empty()) {
-        if (bbox) throw InputError("--bbox: crops an OSM file and needs --osm");
+        if (bbox) throw InputError("--bbox: crops an OSM file and needs --osm", FailureKind::Usage);
         LayoutParams params;
         params.buildings = o.buildings;
         params.seed = o.settings.seed;
@@ -124,7 +126,7 @@ Camera chooseCamera(const RenderOptions& o, const CityModel& city, const Bounds3
                                 o.fovDeg, aspect);
     }
     if (!o.cameraGeo.empty()) {
-        if (!city.origin.valid) throw InputError("--camera-geo: needs a city imported with --osm");
+        if (!city.origin.valid) throw InputError("--camera-geo: needs a city imported with --osm", FailureKind::Usage);
         std::vector<double> c = parseNumberList("--camera-geo", o.cameraGeo, ',', 5, 5);
         Vec2d local = GeoProjection(LonLat{city.origin.lon, city.origin.lat}).project(LonLat{c[0], c[1]});
         return cameraFromHeading(Vec3f{float(local.x), float(c[2]), float(-local.y)}, float(c[3]), float(c[4]),
@@ -133,9 +135,17 @@ Camera chooseCamera(const RenderOptions& o, const CityModel& city, const Bounds3
     return frameCity(cityBounds, o.fovDeg, aspect);
 }
 
+/// Says on stderr what is wrong with the camera, or with --strict fails on the first problem.
+void checkCamera(const RenderOptions& o, const Camera& camera, const CityModel& city, const Bounds3f& cityBounds) {
+    for (const std::string& problem : cameraProblems(camera, city, cityBounds)) {
+        if (o.strict) throw InputError(problem + " (--strict)", FailureKind::Usage);
+        std::fprintf(stderr, "urbis: warning: %s\n", problem.c_str());
+    }
+}
+
 Sun daySun(const RenderOptions& o) {
     std::vector<double> s = parseNumberList("--sun", o.sun, ',', 2, 2);
-    if (!(s[0] >= -90.0 && s[0] <= 90.0)) throw InputError("--sun: elevation must be in [-90, 90] degrees");
+    if (!(s[0] >= -90.0 && s[0] <= 90.0)) throw InputError("--sun: elevation must be in [-90, 90] degrees", FailureKind::Usage);
     // Irradiance in the renderer's relative units: about six times the analytic sky's.
     return makeSun(float(s[0]), float(s[1]), o.sunRadiusDeg, Vec3f{3.3f, 3.1f, 2.8f});
 }
@@ -156,18 +166,19 @@ WallTileSize wallTileSize(const std::string& text) {
     char x = 0, rest = 0;
     if (std::sscanf(text.c_str(), "%d%c%d%c", &size.slots, &x, &size.floors, &rest) != 3 || x != 'x' ||
         size.slots < 1 || size.floors < 1 || size.slots > 0xffff || size.floors > 0xffff)
-        throw InputError("--wall-tiles: need 'whole' or SLOTSxFLOORS (e.g. 4x4), got '" + text + "'");
+        throw InputError("--wall-tiles: need 'whole' or SLOTSxFLOORS (e.g. 4x4), got '" + text + "'", FailureKind::Usage);
     return size;
 }
 
 } // namespace
 
-PreparedScene prepareScene(const RenderOptions& o) {
+PreparedScene prepareScene(const RenderOptions& o, size_t memoryLimit) {
     PreparedScene p;
     Sun sun = daySun(o);
     const WallTileSize tileSize = wallTileSize(o.wallTiles);
     CityMeshOptions meshOptions;
     meshOptions.geometry = p.geometry = parseGeometryModes(o.geometry);
+    meshOptions.memoryLimit = memoryLimit;
     auto t0 = Clock::now();
     p.city = loadCity(o);
     scaleHeights(p.city, o.heightScale);
@@ -184,38 +195,29 @@ PreparedScene prepareScene(const RenderOptions& o) {
     p.secondsBvh = secondsSince(t0);
 
     p.camera = chooseCamera(o, p.city, p.mesh.cityBounds);
+    checkCamera(o, p.camera, p.city, p.mesh.cityBounds);
     return p;
 }
 
-void runRender(const RenderOptions& o) {
-    size_t threads = o.threads ? o.threads : size_t(tbb::info::default_concurrency());
-    tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
-    checkOutputFolder(o.outFile);
-    checkOutputFolder(o.statsFile);
+namespace {
 
-    PreparedScene prepared = prepareScene(o);
+/// Writes --stats: counts, what was dropped and repaired, memory, timings and rays/s.
+void writeStats(const RenderOptions& o, const PreparedScene& prepared, const RenderCounters& counters,
+                const DeviceReport& device, size_t threads, double secondsWrite) {
     const CityModel& city = prepared.city;
     const CityMesh& cityMesh = prepared.mesh;
     const Scene& scene = prepared.scene;
-    double secondsImport = prepared.secondsImport, secondsCitygen = prepared.secondsCitygen,
-           secondsBvh = prepared.secondsBvh;
-
-    RenderCounters counters;
-    DeviceReport device;
-    LinearImage image = renderOnDevice(scene, prepared.camera, o.settings, o.device, isatty(2), counters, device);
-
-    auto t0 = Clock::now();
-    writePng(toneMap(image, o.exposureEv), o.outFile);
-    double secondsWrite = secondsSince(t0);
-
-    if (o.statsFile.empty()) return;
     SceneMemory memory = scene.memory();
-    nlohmann::json dropped(city.dropped);
-    for (const auto& [reason, n] : cityMesh.dropped) dropped[reason] = n;
+    // Import and meshing use their own reasons (docs/cli.md); the meshed roofs' fallbacks count as repairs.
+    nlohmann::json dropped(cityMesh.dropped), repaired = nlohmann::json::object();
+    for (const auto& [reason, entry] : city.dropped) dropped[reason] = entry.count;
+    for (const auto& [reason, entry] : city.repaired) repaired[reason] = entry.count;
+    for (const auto& [reason, n] : cityMesh.roofFallbacks) repaired["roof_" + reason] = n;
     nlohmann::json stats = {
         {"source", city.source},
         {"counts", countsJson(city)},
         {"dropped", dropped},
+        {"repaired", repaired},
         {"triangles", scene.triangles.size()},
         {"triangles_by_kind", cityMesh.trianglesByKind},
         {"geometry", {{"walls", representationName(prepared.geometry.walls)},
@@ -241,13 +243,43 @@ void runRender(const RenderOptions& o) {
                           {"triangle_info", device.memory.triangleInfo}, {"prim_refs", device.memory.primRefs},
                           {"walls", device.memory.walls}, {"materials", device.memory.materials},
                           {"film", device.memory.film}, {"total", device.memory.total()}}},
-        {"seconds", {{"import", secondsImport}, {"citygen", secondsCitygen}, {"bvh", secondsBvh},
+        {"seconds", {{"import", prepared.secondsImport}, {"citygen", prepared.secondsCitygen}, {"bvh", prepared.secondsBvh},
                      {"render", counters.seconds}, {"write", secondsWrite}}},
         {"seconds_render", counters.seconds},
         {"rays", counters.rays},
         {"rays_per_second", counters.seconds > 0 ? double(counters.rays) / counters.seconds : 0.0},
     };
     writeTextFileAtomically(o.statsFile, stats.dump(2) + "\n");
+}
+
+} // namespace
+
+void runRender(const RenderOptions& o) {
+    const auto start = Clock::now();
+    size_t threads = o.threads ? o.threads : size_t(tbb::info::default_concurrency());
+    tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
+    // EXR joins .png here once the film writes it.
+    checkOutputPath("--out", o.outFile, {".png"});
+    checkOutputPath("--stats", o.statsFile, {".json"});
+    checkDistinctOutputs("--out", o.outFile, "--stats", o.statsFile);
+    const size_t limit = memoryLimit(o.maxMemory);
+    requireMemory(hostFilmBytes(o.settings.width, o.settings.height), limit,
+                  "the " + std::to_string(o.settings.width) + "x" + std::to_string(o.settings.height) + " image");
+
+    PreparedScene prepared = prepareScene(o, limit);
+    RenderCounters counters;
+    DeviceReport device;
+    LinearImage image =
+        renderOnDevice(prepared.scene, prepared.camera, o.settings, o.device, isatty(2), o.verbose, counters, device);
+
+    auto t0 = Clock::now();
+    writePng(toneMap(image, o.exposureEv), o.outFile);
+    double secondsWrite = secondsSince(t0);
+
+    if (!o.statsFile.empty()) writeStats(o, prepared, counters, device, threads, secondsWrite);
+    std::printf("urbis: wrote %s (%ux%u, %u spp, %s)%s in %.2f s\n", o.outFile.c_str(), o.settings.width,
+                o.settings.height, o.settings.spp, device.device.c_str(),
+                o.statsFile.empty() ? "" : (" and " + o.statsFile).c_str(), secondsSince(start));
 }
 
 } // namespace urbis

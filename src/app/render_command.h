@@ -33,7 +33,13 @@ struct RenderOptions {
     std::string geometry = "procedural";  ///< --geometry: representation per kind (see parseGeometryModes)
     float heightScale = 1.0f;             ///< multiplies every building's height (benchmarks of tall cities)
     std::string wallTiles = "whole";      ///< --wall-tiles: "whole" or "SLOTSxFLOORS" (splitWallsIntoTiles)
+    std::string maxMemory;                ///< --max-memory: empty for the default (see memoryLimit)
+    bool strict = false;                  ///< warnings (the camera checks) are errors
+    bool verbose = false;                 ///< say which device renders and why
 };
+
+/// The largest --width and --height; the memory check (--max-memory) bounds their product.
+inline constexpr uint32_t kMaxImageSide = 65536;
 
 /// A city loaded (or generated), meshed and turned into a scene with its BVH, ground and sun,
 /// and the camera the options ask for; with the time of each step in seconds.
@@ -46,13 +52,19 @@ struct PreparedScene {
     double secondsImport = 0, secondsCitygen = 0, secondsBvh = 0;
 };
 
-/// Everything before the render itself, shared by `urbis render` and `urbis bench`; throws InputError on bad input.
-PreparedScene prepareScene(const RenderOptions& options);
+/// Everything before the render itself, shared by `urbis render` and `urbis bench`: the city
+/// loaded and meshed (a triangle twin within `memoryLimit` bytes, 0: no limit) and the camera,
+/// checked (cameraProblems: warnings on stderr, errors with --strict). Throws InputError.
+PreparedScene prepareScene(const RenderOptions& options, size_t memoryLimit);
 
 /// Registers the subcommand's options on `app`.
 void addRenderCommand(CLI::App& app, RenderOptions& options);
 
-/// Runs the render; throws InputError on bad input.
+/// Registers --max-memory, --strict and --verbose, which render and bench share, on `cmd`.
+void addRunOptions(CLI::App& cmd, RenderOptions& options);
+
+/// Checks the outputs and the image's memory, then renders and writes --out and --stats, and
+/// ends with one line on stdout saying what it wrote and how long it took. Throws InputError.
 void runRender(const RenderOptions& options);
 
 } // namespace urbis

@@ -19,16 +19,17 @@ std::string cpuModelName() {
 }
 
 LinearImage renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                           const std::string& device, bool showProgress, RenderCounters& counters,
+                           const std::string& device, bool showProgress, bool verbose, RenderCounters& counters,
                            DeviceReport& report) {
+    const bool sayDevice = verbose || device == "cuda";
     if (device != "cpu") {
         GpuInfo info = probeGpu();
-        if (!info.available && device == "cuda") throw InputError("--device cuda: " + info.reason);
+        if (!info.available && device == "cuda") throw InputError("--device cuda: " + info.reason, FailureKind::Device);
         if (info.available) {
             try {
                 size_t filmBytes = size_t(settings.width) * settings.height * sizeof(Vec3f);
                 std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene, filmBytes);
-                std::fprintf(stderr, "urbis: rendering on %s (cuda)\n", info.name.c_str());
+                if (sayDevice) std::fprintf(stderr, "urbis: rendering on %s (cuda)\n", info.name.c_str());
                 LinearImage image = gpu->render(camera, settings, counters);
                 report = DeviceReport{"cuda", info.name, gpu->memory()};
                 return image;
@@ -36,7 +37,7 @@ LinearImage renderOnDevice(const Scene& scene, const Camera& camera, const Rende
                 if (device == "cuda") throw;
                 std::fprintf(stderr, "urbis: %s; falling back to the CPU\n", e.what());
             }
-        } else {
+        } else if (sayDevice) {
             std::fprintf(stderr, "urbis: rendering on the CPU (%s)\n", info.reason.c_str());
         }
     }

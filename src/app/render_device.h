@@ -19,10 +19,11 @@ struct DeviceReport {
 std::string cpuModelName();
 
 /// Renders on `device`: "cuda" (fails with InputError if the GPU cannot), "cpu", or "auto" (the
-/// GPU when one is usable, else the CPU, saying which on stderr, with a stated fallback to the CPU
-/// if the GPU fails). `showProgress` draws the CPU progress bar.
+/// GPU when one is usable, else the CPU, with a stated fallback to the CPU if the GPU fails).
+/// Which device renders is said on stderr when `verbose` or when "cuda" was asked for.
+/// `showProgress` draws the CPU progress bar.
 LinearImage renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                           const std::string& device, bool showProgress, RenderCounters& counters,
+                           const std::string& device, bool showProgress, bool verbose, RenderCounters& counters,
                            DeviceReport& report);
 
 } // namespace urbis

@@ -71,7 +71,7 @@ void meshWallTwins(const CityMeshOptions& options, CityMesh& out) {
                       "--geometry walls=triangles: the facades' triangle twin has %zu triangles and needs about %.1f GB "
                       "to build, more than the %.1f GB available; use --geometry walls=procedural",
                       twinTriangles, double(needed) / 1e9, double(limit) / 1e9);
-        throw InputError(message);
+        throw InputError(message, FailureKind::OutOfMemory);
     }
     std::vector<TriangleMesh> parts((out.walls.size() + kChunk - 1) / kChunk);
     tbb::parallel_for(size_t(0), parts.size(), [&](size_t c) {

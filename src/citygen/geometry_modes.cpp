@@ -12,7 +12,7 @@ Representation parseRepresentation(const std::string& text, const std::string& w
     if (text == "procedural") return Representation::Procedural;
     if (text == "triangles") return Representation::Triangles;
     if (text == "plain") return Representation::Plain;
-    throw InputError("--geometry: '" + text + "' in '" + whole + "' is not procedural, triangles or plain");
+    throw InputError("--geometry: '" + text + "' in '" + whole + "' is not procedural, triangles or plain", FailureKind::Usage);
 }
 
 } // namespace
@@ -27,13 +27,13 @@ GeometryModes parseGeometryModes(const std::string& text) {
     std::string item;
     while (std::getline(list, item, ',')) {
         const size_t eq = item.find('=');
-        if (eq == std::string::npos) throw InputError("--geometry: expected KIND=MODE, got '" + item + "'");
+        if (eq == std::string::npos) throw InputError("--geometry: expected KIND=MODE, got '" + item + "'", FailureKind::Usage);
         const std::string kind = item.substr(0, eq);
         const Representation r = parseRepresentation(item.substr(eq + 1), text);
         if (kind == "walls") modes.walls = r;
         else if (kind == "roofs") modes.roofs = r;
         else if (kind == "buildings") modes = GeometryModes{r, r};
-        else throw InputError("--geometry: unknown kind '" + kind + "' (kinds: walls, roofs, buildings)");
+        else throw InputError("--geometry: unknown kind '" + kind + "' (kinds: walls, roofs, buildings)", FailureKind::Usage);
     }
     return modes;
 }

@@ -52,13 +52,13 @@ bool encodePng(const Rgb8Image& image, FILE* file) {
 void writePng(const Rgb8Image& image, const std::string& path) {
     std::string temporary = path + ".tmp";
     FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) throw InputError(path + ": cannot write: " + std::strerror(errno));
+    if (!file) throw InputError(path + ": cannot write: " + std::strerror(errno), FailureKind::Output);
     bool encoded = encodePng(image, file);
     bool closed = std::fclose(file) == 0;
     std::error_code ec;
     if (!encoded || !closed) {
         std::filesystem::remove(temporary, ec);
-        throw InputError(path + ": failed to write PNG data");
+        throw InputError(path + ": failed to write PNG data", FailureKind::Output);
     }
     commitTemporary(temporary, path);
 }

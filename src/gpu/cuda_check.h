@@ -13,7 +13,8 @@ namespace urbis {
 /// Throws InputError "CUDA error in CALL: ERROR STRING" unless `status` is cudaSuccess.
 inline void cudaCheck(cudaError_t status, const char* call) {
     if (status != cudaSuccess)
-        throw InputError(std::string("CUDA error in ") + call + ": " + cudaGetErrorString(status));
+        throw InputError(std::string("CUDA error in ") + call + ": " + cudaGetErrorString(status),
+                         status == cudaErrorMemoryAllocation ? FailureKind::OutOfMemory : FailureKind::Device);
 }
 
 } // namespace urbis

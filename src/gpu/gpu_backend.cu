@@ -64,7 +64,7 @@ __global__ void __launch_bounds__(kTraceBlock) occludedKernel(SceneView scene, c
 void checkLaunch(const char* kernel) {
     cudaError_t status = cudaGetLastError();
     if (status != cudaSuccess)
-        throw InputError(std::string("CUDA error launching ") + kernel + ": " + cudaGetErrorString(status));
+        throw InputError(std::string("CUDA error launching ") + kernel + ": " + cudaGetErrorString(status), FailureKind::Device);
 }
 
 /// A pair of CUDA events around device work; elapsed time in milliseconds.
@@ -182,7 +182,7 @@ struct GpuScene::Impl {
         URBIS_CUDA_CHECK(cudaMemGetInfo(&freeBytes, &totalBytes));
         if (bytes > freeBytes)
             throw InputError(std::string(what) + " needs " + formatMiB(bytes) + " of GPU memory but " + info.name +
-                             " has " + formatMiB(freeBytes) + " free of " + formatMiB(totalBytes));
+                             " has " + formatMiB(freeBytes) + " free of " + formatMiB(totalBytes), FailureKind::OutOfMemory);
     }
 };
 
@@ -192,7 +192,7 @@ GpuScene::~GpuScene() = default;
 std::unique_ptr<GpuScene> GpuScene::upload(const Scene& scene, size_t extraBytes) {
     auto impl = std::make_unique<Impl>();
     impl->info = probeGpu();
-    if (!impl->info.available) throw InputError(impl->info.reason);
+    if (!impl->info.available) throw InputError(impl->info.reason, FailureKind::Device);
     impl->requireFree(DeviceScene::bytesFor(scene) + extraBytes, "the scene");
     impl->scene.upload(scene);
     return std::unique_ptr<GpuScene>(new GpuScene(std::move(impl)));

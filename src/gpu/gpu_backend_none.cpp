@@ -8,7 +8,7 @@ namespace urbis {
 
 namespace {
 const char* const kNoCuda = "urbis was built without CUDA";
-[[noreturn]] void noCuda() { throw InputError(kNoCuda); }
+[[noreturn]] void noCuda() { throw InputError(kNoCuda, FailureKind::Device); }
 } // namespace
 
 GpuInfo probeGpu() {

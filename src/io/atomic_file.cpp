@@ -14,7 +14,7 @@ void commitTemporary(const std::string& temporary, const std::string& path) {
     std::filesystem::rename(temporary, path, ec);
     if (ec) {
         std::filesystem::remove(temporary, ec);
-        throw InputError(path + ": cannot move the finished file into place");
+        throw InputError(path + ": cannot move the finished file into place", FailureKind::Output);
     }
 }
 
@@ -22,12 +22,12 @@ void writeTextFileAtomically(const std::string& path, const std::string& text) {
     std::string temporary = path + ".tmp";
     {
         std::ofstream file(temporary, std::ios::binary);
-        if (!file) throw InputError(path + ": cannot write: " + std::strerror(errno));
+        if (!file) throw InputError(path + ": cannot write: " + std::strerror(errno), FailureKind::Output);
         file << text;
         if (!file.flush()) {
             std::error_code ec;
             std::filesystem::remove(temporary, ec);
-            throw InputError(path + ": failed to write");
+            throw InputError(path + ": failed to write", FailureKind::Output);
         }
     }
     commitTemporary(temporary, path);

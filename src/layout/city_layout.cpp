@@ -35,16 +35,17 @@ constexpr double kTreeFromBuildings = 0.8;    // m from the sidewalk's outer edg
 enum Purpose : uint32_t { BlockLots = 1, BlockPark, ParkTrees, BuildingSeed };
 
 void validate(const LayoutParams& p) {
-    if (p.buildings == 0) throw InputError("layout: the building count must be at least 1");
+    if (p.buildings == 0) throw InputError("layout: the building count must be at least 1", FailureKind::Usage);
     if (p.buildings > kMaxGeneratedBuildings)
         throw InputError("layout: at most " + std::to_string(kMaxGeneratedBuildings) + " buildings, not " +
-                         std::to_string(p.buildings));
+                         std::to_string(p.buildings), FailureKind::Usage);
     if (!std::isfinite(p.minBuildingHeight) || !std::isfinite(p.maxBuildingHeight) ||
         p.minBuildingHeight <= 0.0f || p.maxBuildingHeight <= 0.0f)
-        throw InputError("layout: building heights must be finite and positive");
+        throw InputError("layout: building heights must be finite and positive", FailureKind::Usage);
     if (p.minBuildingHeight > p.maxBuildingHeight)
         throw InputError("layout: minimum building height " + std::to_string(p.minBuildingHeight) +
-                         " m is above the maximum " + std::to_string(p.maxBuildingHeight) + " m");
+                         " m is above the maximum " + std::to_string(p.maxBuildingHeight) + " m",
+                         FailureKind::Usage);
 }
 
 // Which blocks of a grid hold the city, and what is on them.

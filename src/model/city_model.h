@@ -6,9 +6,10 @@
 // z = -north, y = up.)
 #pragma once
 
+#include "model/reason_log.h"
+
 #include <array>
 #include <cstdint>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,12 @@ struct Area {
     Polygon polygon;
 };
 
+/// A longitude/latitude box in degrees, WGS84.
+struct LonLatBox {
+    bool valid = false;
+    double minLon = 0, minLat = 0, maxLon = 0, maxLat = 0;
+};
+
 /// Geographic reference of a CityModel imported from OSM.
 struct GeoOrigin {
     bool valid = false;
@@ -137,7 +144,11 @@ struct CityModel {
     std::vector<Area> areas;
     GeoOrigin origin;
     std::string source;                        ///< file name, or "generated"
-    std::map<std::string, uint64_t> dropped;   ///< why things were dropped -> how many
+    LonLatBox headerBox;                       ///< the file's header box; invalid when it has none
+    LonLatBox cropBox;                         ///< the box the import cropped to
+    std::string cropBoxSource;                 ///< where cropBox came from: "bbox", "header" or "data_extent"
+    ReasonLog dropped;                         ///< objects not kept, by reason
+    ReasonLog repaired;                        ///< objects kept after a fix (geometry made valid, a tag ignored), by reason
     size_t buildingParts() const {
         size_t n = 0;
         for (const Building& b : buildings) n += b.isPart ? 1 : 0;

@@ -24,7 +24,7 @@ bool overlaps(const std::array<Vec2d, 2>& a, const std::array<Vec2d, 2>& b) {
 } // namespace
 
 void replaceOutlinesByParts(std::vector<Building>& buildings, const GeosContext& geos,
-                            std::map<std::string, uint64_t>& dropped) {
+                            ReasonLog& dropped) {
     if (std::none_of(buildings.begin(), buildings.end(), [](const Building& b) { return b.isPart; })) return;
     CellGrid grid(kCell);
     std::vector<std::array<Vec2d, 2>> boxes(buildings.size());
@@ -51,11 +51,13 @@ void replaceOutlinesByParts(std::vector<Building>& buildings, const GeosContext&
     }
     size_t kept = 0;
     for (size_t i = 0; i < buildings.size(); ++i) {
-        if (replaced[i]) continue;
+        if (replaced[i]) {
+            record(dropped, "replaced_by_parts", polygonRef(buildings[i].osmId));
+            continue;
+        }
         if (kept != i) buildings[kept] = std::move(buildings[i]);
         ++kept;
     }
-    if (const size_t n = buildings.size() - kept; n > 0) dropped["replaced_by_parts"] += n;
     buildings.resize(kept);
 }
 

@@ -12,9 +12,9 @@ namespace urbis {
 
 /// Removes every building outline (isPart false) that holds a part: the part's centroid
 /// lies inside the outline (outer ring, not in a hole), or more than half of the part's
-/// area overlaps it. Each removed outline counts as "replaced_by_parts" in `dropped`.
+/// area overlaps it. Each removed outline is recorded as "replaced_by_parts" in `dropped`.
 /// Outlines are found through a uniform grid, so this is near linear in the count.
 void replaceOutlinesByParts(std::vector<Building>& buildings, const GeosContext& geos,
-                            std::map<std::string, uint64_t>& dropped);
+                            ReasonLog& dropped);
 
 } // namespace urbis

@@ -17,7 +17,8 @@ public:
     Builder(const GeoBox& box, CityModel& city) : box_(box), projection_(box.centre()), city_(city) {}
 
     /// Projects, checks and repairs one polygon; nullptr when usable, else the drop reason.
-    const char* makePolygon(const GeoPolygon& g, PolygonRole role, Polygon& out) {
+    /// `repaired` tells whether GEOS had to make it valid.
+    const char* makePolygon(const GeoPolygon& g, Polygon& out, bool& repaired) {
         out.outer = ring(g.outer);
         if (out.outer.size() < 3) return "degenerate_footprint";
         if (!box_.contains(centroidInDegrees(g.outer))) return "outside_bbox";
@@ -26,15 +27,16 @@ public:
         orient(out);
         const Validity validity = geos_.makeValid(out);
         if (validity == Validity::Invalid) return "self_intersecting";
-        if (validity == Validity::Repaired) ++city_.dropped[dropKey(role, "repaired")];
+        repaired = validity == Validity::Repaired;
         if (area(out) < kMinArea) return "too_small";
         return nullptr;
     }
 
     void addBuilding(RawBuilding& raw) {
         const PolygonRole role = raw.attributes.isPart ? PolygonRole::Part : PolygonRole::Building;
+        const OsmRef id = polygonRef(raw.attributes.osmId);
         if (raw.problem) {
-            ++city_.dropped[dropKey(role, raw.problem)];
+            record(city_.dropped, dropKey(role, raw.problem), id);
             return;
         }
         bool kept = false;
@@ -42,36 +44,43 @@ public:
             Building b = raw.attributes;
             // Underground objects are counted only where they would otherwise stand, so that
             // one outside the box still counts as outside_bbox.
-            const char* reason = makePolygon(g, role, b.footprint);
+            bool repaired = false;
+            const char* reason = makePolygon(g, b.footprint, repaired);
             if (!reason && raw.underground) reason = "underground";
             if (reason) {
-                ++city_.dropped[dropKey(role, reason)];
+                record(city_.dropped, dropKey(role, reason), id);
                 continue;
             }
+            if (repaired) record(city_.repaired, dropKey(role, "made_valid"), id);
             city_.buildings.push_back(std::move(b));
             kept = true;
         }
         if (kept)
-            for (const auto& [issue, n] : raw.tagIssues) city_.dropped[issue] += n;
+            for (const auto& [issue, n] : raw.tagIssues) record(city_.repaired, issue, id, n);
     }
 
     void addArea(const RawArea& raw) {
+        const OsmRef id = polygonRef(raw.attributes.osmId);
         if (raw.problem) {
-            ++city_.dropped[dropKey(PolygonRole::Area, raw.problem)];
+            record(city_.dropped, dropKey(PolygonRole::Area, raw.problem), id);
             return;
         }
         for (const GeoPolygon& g : raw.polygons) {
             Area a = raw.attributes;
-            if (const char* reason = makePolygon(g, PolygonRole::Area, a.polygon))
-                ++city_.dropped[dropKey(PolygonRole::Area, reason)];
-            else
-                city_.areas.push_back(std::move(a));
+            bool repaired = false;
+            if (const char* reason = makePolygon(g, a.polygon, repaired)) {
+                record(city_.dropped, dropKey(PolygonRole::Area, reason), id);
+                continue;
+            }
+            if (repaired) record(city_.repaired, dropKey(PolygonRole::Area, "made_valid"), id);
+            city_.areas.push_back(std::move(a));
         }
     }
 
     void addRoad(const RawRoad& raw) {
+        const OsmRef id{OsmType::Way, raw.attributes.osmId};
         if (std::none_of(raw.pieces.begin(), raw.pieces.end(), [](const GeoLine& l) { return l.size() >= 2; })) {
-            ++city_.dropped[raw.pieces.empty() ? "road_incomplete_geometry" : "road_degenerate"];
+            record(city_.dropped, raw.pieces.empty() ? "road_incomplete_geometry" : "road_degenerate", id);
             return;
         }
         size_t kept = 0;
@@ -86,13 +95,17 @@ public:
                 city_.roads.push_back(std::move(road));
                 ++kept;
             }
-        if (kept == 0) ++city_.dropped["road_outside_bbox"];
+        if (kept == 0) {
+            record(city_.dropped, "road_outside_bbox", id);
+            return;
+        }
+        for (const auto& [issue, n] : raw.tagIssues) record(city_.repaired, issue, id, n);
     }
 
     template <typename T>
     void addPoint(T item, LonLat p, std::vector<T>& out, const char* outsideReason) {
         if (!box_.contains(p)) {
-            ++city_.dropped[outsideReason];
+            record(city_.dropped, outsideReason, {OsmType::Node, item.osmId});
             return;
         }
         item.position = projection_.project(p);
@@ -131,7 +144,7 @@ CityModel buildCityModel(RawFeatures&& raw, const GeoBox& box) {
     CityModel city;
     const LonLat centre = box.centre();
     city.origin = {true, centre.lat, centre.lon};
-    city.dropped = std::move(raw.issues);
+    city.dropped = std::move(raw.dropped);
     Builder builder(box, city);
     for (RawBuilding& b : raw.buildings) builder.addBuilding(b);
     for (const RawArea& a : raw.areas) builder.addArea(a);

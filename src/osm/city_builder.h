@@ -9,13 +9,14 @@ namespace urbis {
 
 /// Builds the CityModel of `raw` cropped to `box`, on the tangent plane at the box's
 /// centre. A building or area polygon is kept when its centroid lies in the box, it has
-/// 3+ distinct points, it is valid (or GEOS repairs it: "repaired"), it covers 1 m^2 and,
-/// for buildings and parts, it is not underground (RawBuilding::underground: "underground");
-/// roads are clipped to the box; lamps and trees must lie in it. Rings come out without
-/// duplicate or closing points, outer counter-clockwise, holes clockwise. Everything
-/// dropped is counted in CityModel::dropped (see dropKey); building:parts then replace
-/// their outlines (an underground part is dropped first and replaces nothing). `source` is
-/// left empty.
+/// 3+ distinct points, it is valid (or GEOS repairs it: "made_valid" in CityModel::repaired),
+/// it covers 1 m^2 and, for buildings and parts, it is not underground
+/// (RawBuilding::underground: "underground"); roads are clipped to the box; lamps and trees
+/// must lie in it. Rings come out without duplicate or closing points, outer
+/// counter-clockwise, holes clockwise. Everything dropped is recorded with its id in
+/// CityModel::dropped (see dropKey), the repairs and tag problems of kept objects in
+/// CityModel::repaired; building:parts then replace their outlines (an underground part is
+/// dropped first and replaces nothing). `source` and the boxes are left empty.
 CityModel buildCityModel(RawFeatures&& raw, const GeoBox& box);
 
 } // namespace urbis

@@ -88,7 +88,7 @@ void FeatureCollector::way(const osmium::Way& way) {
     if (!tags.has_key("highway")) return;
     RawRoad road;
     bool reversed = false;
-    road.attributes = roadFromTags(lookupIn(tags), way.id(), reversed, out_.issues);
+    road.attributes = roadFromTags(lookupIn(tags), way.id(), reversed, road.tagIssues);
     GeoLine piece;
     bool missing = false;
     for (const osmium::NodeRef& node : way.nodes()) {
@@ -101,7 +101,7 @@ void FeatureCollector::way(const osmium::Way& way) {
         piece.clear();
     }
     if (!piece.empty()) road.pieces.push_back(std::move(piece));
-    if (missing) ++out_.issues["road_missing_nodes"];
+    if (missing) ++road.tagIssues["road_missing_nodes"];
     if (reversed)
         for (GeoLine& p : road.pieces) std::reverse(p.begin(), p.end());
     out_.roads.push_back(std::move(road));
@@ -145,7 +145,8 @@ void FeatureCollector::addPolygonFeature(PolygonRole role, const osmium::TagList
 void countUnassembledRelations(const RelationCatalogue& catalogue, const FeatureCollector& collector,
                                RawFeatures& out) {
     for (const auto& [id, role] : catalogue.roles())
-        if (!collector.assembledRelations().contains(id)) ++out.issues[dropKey(role, "incomplete_geometry")];
+        if (!collector.assembledRelations().contains(id))
+            record(out.dropped, dropKey(role, "incomplete_geometry"), {OsmType::Relation, id});
 }
 
 } // namespace urbis

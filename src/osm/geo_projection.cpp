@@ -23,7 +23,7 @@ void ecefFromLonLat(LonLat p, double out[3]) {
 } // namespace
 
 GeoProjection::GeoProjection(LonLat origin)
-    : sinLat_(std::sin(origin.lat * kRadians)), cosLat_(std::cos(origin.lat * kRadians)),
+    : origin_(origin), sinLat_(std::sin(origin.lat * kRadians)), cosLat_(std::cos(origin.lat * kRadians)),
       sinLon_(std::sin(origin.lon * kRadians)), cosLon_(std::cos(origin.lon * kRadians)) {
     ecefFromLonLat(origin, ecef0_);
 }
@@ -34,6 +34,20 @@ Vec2d GeoProjection::project(LonLat p) const {
     const double dx = e[0] - ecef0_[0], dy = e[1] - ecef0_[1], dz = e[2] - ecef0_[2];
     return {-sinLon_ * dx + cosLon_ * dy,
             -sinLat_ * cosLon_ * dx - sinLat_ * sinLon_ * dy + cosLat_ * dz};
+}
+
+LonLat GeoProjection::unproject(Vec2d local) const {
+    constexpr double kStep = 1e-5; // degrees, for the Jacobian by differences
+    LonLat p = origin_;
+    for (int iteration = 0; iteration < 6; ++iteration) {
+        const Vec2d at = project(p);
+        const Vec2d dLon = project({p.lon + kStep, p.lat}), dLat = project({p.lon, p.lat + kStep});
+        const double a = (dLon.x - at.x) / kStep, b = (dLat.x - at.x) / kStep;
+        const double c = (dLon.y - at.y) / kStep, d = (dLat.y - at.y) / kStep;
+        const double ex = local.x - at.x, ey = local.y - at.y, det = a * d - b * c;
+        p = {p.lon + (d * ex - b * ey) / det, p.lat + (a * ey - c * ex) / det};
+    }
+    return p;
 }
 
 } // namespace urbis

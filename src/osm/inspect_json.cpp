@@ -1,5 +1,7 @@
 #include "osm/osm_import.h"
 
+#include "osm/geo_projection.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -24,9 +26,39 @@ std::array<double, 4> extentOf(const CityModel& city) {
     return e;
 }
 
+nlohmann::json boxJson(const LonLatBox& box) {
+    if (!box.valid) return nullptr;
+    return {{"min_lon", box.minLon}, {"min_lat", box.minLat}, {"max_lon", box.maxLon}, {"max_lat", box.maxLat}};
+}
+
+/// The lon/lat box of the local extent `e` ({minX, minY, maxX, maxY}) through the inverse projection.
+LonLatBox lonLatOf(const std::array<double, 4>& e, const GeoOrigin& origin) {
+    const GeoProjection projection({origin.lon, origin.lat});
+    LonLatBox box{true, HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (Vec2d corner : {Vec2d{e[0], e[1]}, Vec2d{e[2], e[1]}, Vec2d{e[0], e[3]}, Vec2d{e[2], e[3]}}) {
+        const LonLat p = projection.unproject(corner);
+        box = {true, std::min(box.minLon, p.lon), std::min(box.minLat, p.lat), std::max(box.maxLon, p.lon),
+               std::max(box.maxLat, p.lat)};
+    }
+    return box;
+}
+
+/// {reason: count} of `log`, and with `ids` {reason: ["w123", ...]} into `idsOut`.
+nlohmann::json countsOf(const ReasonLog& log, bool ids, nlohmann::json& idsOut) {
+    nlohmann::json counts = nlohmann::json::object();
+    idsOut = nlohmann::json::object();
+    for (const auto& [reason, entry] : log) {
+        counts[reason] = entry.count;
+        if (!ids) continue;
+        nlohmann::json& list = idsOut[reason] = nlohmann::json::array();
+        for (OsmRef ref : entry.ids) list.push_back(osmRefName(ref));
+    }
+    return counts;
+}
+
 } // namespace
 
-nlohmann::json inspectJson(const CityModel& city) {
+nlohmann::json inspectJson(const CityModel& city, bool ids) {
     const auto countAreas = [&city](AreaKind kind) {
         return std::count_if(city.areas.begin(), city.areas.end(), [kind](const Area& a) { return a.kind == kind; });
     };
@@ -51,10 +83,17 @@ nlohmann::json inspectJson(const CityModel& city) {
                     {"from_nearby_median", countHeights(HeightSource::NearbyMedian)},
                     {"from_type_table", countHeights(HeightSource::TypeTable)},
                     {"from_range", countHeights(HeightSource::Range)}};
-    j["dropped"] = nlohmann::json::object();
-    for (const auto& [reason, n] : city.dropped) j["dropped"][reason] = n;
+    nlohmann::json droppedIds, repairedIds;
+    j["dropped"] = countsOf(city.dropped, ids, droppedIds);
+    j["repaired"] = countsOf(city.repaired, ids, repairedIds);
+    if (ids) {
+        j["dropped_ids"] = droppedIds;
+        j["repaired_ids"] = repairedIds;
+    }
     j["extent_m"] = {{"width", e[2] - e[0]}, {"depth", e[3] - e[1]}};
     j["origin"] = {{"lat", city.origin.lat}, {"lon", city.origin.lon}};
+    j["bounds"] = {{"kept", boxJson(lonLatOf(e, city.origin))}, {"header", boxJson(city.headerBox)},
+                   {"crop", boxJson(city.cropBox)}, {"crop_source", city.cropBoxSource}};
     return j;
 }
 

@@ -17,21 +17,21 @@ namespace {
 
 constexpr double kExtentPadding = 1e-6; // degrees, about 0.1 m
 
-[[noreturn]] void fail(const std::string& path, std::string problem) {
+[[noreturn]] void fail(const std::string& path, std::string problem, FailureKind kind = FailureKind::BadInput) {
     std::replace_if(problem.begin(), problem.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-    throw InputError(path + ": " + problem);
+    throw InputError(path + ": " + problem, kind);
 }
 
 void checkOptions(const std::string& path, const ImportOptions& options) {
     if (const auto& range = options.untaggedHeightRange;
         range && !((*range)[0] > 0.0f && (*range)[0] <= (*range)[1] && (*range)[1] <= 1000.0f))
-        fail(path, "building height range must satisfy 0 < min <= max <= 1000 m");
+        fail(path, "building height range must satisfy 0 < min <= max <= 1000 m", FailureKind::Usage);
     if (!(options.metresPerLevel > 0.0f && options.metresPerLevel < 20.0f))
-        fail(path, "metres per level must lie in (0, 20)");
+        fail(path, "metres per level must lie in (0, 20)", FailureKind::Usage);
     if (options.bbox) {
         const auto [w, s, e, n] = *options.bbox;
         if (!(w >= -180.0 && w < e && e <= 180.0 && s >= -90.0 && s < n && n <= 90.0))
-            fail(path, "bbox must be minLon,minLat,maxLon,maxLat with min < max, in degrees");
+            fail(path, "bbox must be minLon,minLat,maxLon,maxLat with min < max, in degrees", FailureKind::Usage);
     }
 }
 
@@ -54,16 +54,23 @@ CityModel importOsm(const std::string& path, const ImportOptions& options) {
     } catch (const std::exception& e) {
         fail(path, std::string("cannot read OSM data: ") + e.what());
     }
-    GeoBox box = raw.headerBox;
+    const GeoBox header = raw.headerBox;
+    GeoBox box = header;
+    const char* boxSource = "header";
     if (options.bbox) {
         box = {(*options.bbox)[0], (*options.bbox)[1], (*options.bbox)[2], (*options.bbox)[3]};
+        boxSource = "bbox";
     } else if (!box.valid()) {
         const GeoBox& e = raw.dataExtent; // padded, so that a single node or a meridian gives a box
         if (e.minLon > e.maxLon) fail(path, "no nodes with locations");
         box = {e.minLon - kExtentPadding, e.minLat - kExtentPadding, e.maxLon + kExtentPadding, e.maxLat + kExtentPadding};
+        boxSource = "data_extent";
     }
 
     CityModel city = buildCityModel(std::move(raw), box);
+    if (header.valid()) city.headerBox = {true, header.minLon, header.minLat, header.maxLon, header.maxLat};
+    city.cropBox = {true, box.minLon, box.minLat, box.maxLon, box.maxLat};
+    city.cropBoxSource = boxSource;
     paintUntaggedBuildings(city);
     if (city.buildings.empty())
         fail(path, "no buildings inside the box (" + std::to_string(box.minLon) + "," + std::to_string(box.minLat) +

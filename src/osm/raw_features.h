@@ -41,7 +41,7 @@ struct RawBuilding {
     Building attributes;
     std::vector<GeoPolygon> polygons;
     const char* problem = nullptr; ///< a drop reason ("incomplete_geometry", ...) or nullptr
-    std::map<std::string, uint64_t> tagIssues; ///< counted only if the building is kept
+    std::map<std::string, uint64_t> tagIssues; ///< counted (as repaired) only if the building is kept
     bool underground = false;      ///< isUnderground: dropped as "underground" where it would be kept
 };
 
@@ -56,6 +56,7 @@ struct RawArea {
 struct RawRoad {
     Road attributes;
     std::vector<GeoLine> pieces;
+    std::map<std::string, uint64_t> tagIssues; ///< counted (as repaired) only if the road is kept
 };
 
 struct RawFeatures {
@@ -66,7 +67,7 @@ struct RawFeatures {
     std::vector<std::pair<Tree, LonLat>> trees;
     GeoBox headerBox;                             ///< invalid when the file has none
     GeoBox dataExtent{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL}; ///< of all node locations
-    std::map<std::string, uint64_t> issues;       ///< tag problems and incomplete objects
+    ReasonLog dropped;                            ///< objects dropped while reading (incomplete relations)
 };
 
 } // namespace urbis

@@ -7,8 +7,8 @@ namespace urbis {
 
 Camera makeLookAtCamera(Vec3f position, Vec3f target, float fovYDeg, float aspect) {
     Vec3f view = target - position;
-    if (!(length(view) > 0.0f)) throw InputError("camera: position and target are the same point");
-    if (!(fovYDeg > 0.0f && fovYDeg < 179.0f)) throw InputError("camera: field of view must be in (0, 179) degrees");
+    if (!(length(view) > 0.0f)) throw InputError("camera: position and target are the same point", FailureKind::Usage);
+    if (!(fovYDeg > 0.0f && fovYDeg < 179.0f)) throw InputError("camera: field of view must be in (0, 179) degrees", FailureKind::Usage);
     Camera camera;
     camera.position = position;
     camera.forward = normalize(view);

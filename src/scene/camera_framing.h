@@ -6,8 +6,13 @@
 
 namespace urbis {
 
-/// An elevated three-quarter view (from the south-west, 22 degrees down) that fits `cityBounds`
-/// (world space) in the frame.
+/// Share of the image's half width and half height that frameCity leaves free on each side.
+inline constexpr float kFramingMargin = 0.03f;
+
+/// An elevated three-quarter view (from the south-west, 22 degrees down) of `cityBounds` (world
+/// space) from the least distance at which all 8 corners of the bounds project inside the image,
+/// kFramingMargin from its edges, for this field of view and aspect; the corners' extent on
+/// the image is centred on both axes.
 Camera frameCity(const Bounds3f& cityBounds, float fovYDeg, float aspect);
 
 /// A camera at world `position` looking along a heading (degrees clockwise from north) and a
