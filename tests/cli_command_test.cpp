@@ -17,7 +17,8 @@ int lines(const std::string& text) { return int(std::count(text.begin(), text.en
 
 /// A failing command: `code`, one line on stderr holding every one of `mentions`, no out.png left.
 void expectFailure(const std::string& args, int code, std::initializer_list<std::string> mentions) {
-    auto dir = scratchDir("failure");
+    // One folder per test: ctest runs the tests of this file in parallel processes.
+    auto dir = scratchDir(std::string("failure_") + testing::UnitTest::GetInstance()->current_test_info()->name());
     CommandResult r = runUrbis(args, dir);
     EXPECT_EQ(r.exitCode, code) << args << " -> " << r.err;
     EXPECT_EQ(lines(r.err), 1) << args << ": not one line: " << r.err;
