@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <tuple>
 
@@ -16,13 +17,19 @@ namespace urbis {
 
 namespace {
 
+/// Reflectance of real building surfaces: fresh white paint reflects about 85 %, black roofing felt
+/// and dark slate about 3 %. A mapped "black" or "white" is such a surface, not a perfect absorber or
+/// reflector (a pure black roof renders as a hole in the city).
+constexpr float kMinAlbedo = 0.03f, kMaxAlbedo = 0.85f;
+
 /// One material per distinct colour, so a million buildings share a small table.
 class MaterialTable {
 public:
     uint32_t indexOf(Rgb c) {
         auto key = std::make_tuple(c.r, c.g, c.b);
         auto [it, inserted] = index_.try_emplace(key, uint32_t(materials.size()));
-        if (inserted) materials.push_back(Material{Vec3f{c.r, c.g, c.b}});
+        const auto clamp = [](float v) { return std::clamp(v, kMinAlbedo, kMaxAlbedo); };
+        if (inserted) materials.push_back(Material{Vec3f{clamp(c.r), clamp(c.g), clamp(c.b)}});
         return it->second;
     }
     std::vector<Material> materials;
