@@ -23,6 +23,7 @@ mkdir -p "$corpus" "$findings"
 
 # -timeout: one input may take 10 s (an extract of the seed corpus takes well under one);
 # -rss_limit_mb / -malloc_limit_mb: a single allocation or a process over 2 GB is a finding.
+# UBSan halts on every report but those fuzz/ubsan_suppressions.txt names (libraries' known ones).
 cd "$findings"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$root/fuzz/ubsan_suppressions.txt"
 exec "$build/fuzz/$target" "$corpus" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
