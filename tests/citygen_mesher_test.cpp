@@ -59,12 +59,12 @@ TEST(BuildingMesher, FloatingPartIsClosed) {
     EXPECT_EQ(openEdges(building), 0u);
 }
 
-TEST(BuildingMesher, UntriangulableFootprintIsCounted) {
+TEST(BuildingMesher, DegenerateFootprintIsCounted) {
     CityModel city;
     Building broken;
     broken.footprint.outer = {{0, 0}, {1, 1}};  // two points: not a polygon
     city.buildings = {courtyardBuilding(0.0f), broken};
     CityMesh out = meshCity(city);
-    EXPECT_EQ(out.dropped["triangulation_failed"], 1u);
+    EXPECT_EQ(out.dropped["degenerate_footprint"], 1u);
     EXPECT_EQ(out.walls.size(), 8u);
 }

@@ -14,10 +14,6 @@ using namespace urbis::test;
 
 namespace {
 
-const RoofShape kAllShapes[] = {RoofShape::Flat,   RoofShape::Skillion, RoofShape::Gabled,  RoofShape::Hipped,
-                                RoofShape::Pyramidal, RoofShape::Dome,  RoofShape::Onion,   RoofShape::Gambrel,
-                                RoofShape::Mansard, RoofShape::Round,   RoofShape::Unknown};
-
 /// The spread (max - min) in world x and z of the roof's highest vertices.
 std::pair<float, float> ridgeSpread(const TriangleMesh& mesh) {
     float top = -1e30f;

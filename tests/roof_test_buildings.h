@@ -8,6 +8,11 @@
 
 namespace urbis::test {
 
+/// Every RoofShape, Unknown included.
+inline constexpr RoofShape kAllShapes[] = {RoofShape::Flat,      RoofShape::Skillion, RoofShape::Gabled,  RoofShape::Hipped,
+                                           RoofShape::Pyramidal, RoofShape::Dome,     RoofShape::Onion,   RoofShape::Gambrel,
+                                           RoofShape::Mansard,   RoofShape::Round,    RoofShape::Unknown};
+
 inline Polygon rectangle(double w, double d) { return {{{0, 0}, {w, 0}, {w, d}, {0, d}}, {}}; }
 
 inline Polygon lShape() { return {{{0, 0}, {20, 0}, {20, 8}, {8, 8}, {8, 20}, {0, 20}}, {}}; }

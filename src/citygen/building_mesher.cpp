@@ -1,10 +1,12 @@
 #include "citygen/building_mesher.h"
 
+#include "citygen/footprint_cleaning.h"
 #include "citygen/roof_mesher.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 namespace urbis {
 
@@ -36,11 +38,9 @@ GeometryPtr makePolygon(GEOSContextHandle_t geos, const Polygon& polygon) {
     return GeometryPtr(GEOSGeom_createPolygon_r(geos, shell, holes.data(), unsigned(holes.size())), {geos});
 }
 
-/// Triangles of the footprint in the city plane, from GEOS's constrained Delaunay triangulation.
-bool triangulateFootprint(GEOSContextHandle_t geos, const Polygon& footprint, std::vector<std::array<Vec2d, 3>>& out) {
-    GeometryPtr polygon = makePolygon(geos, footprint);
-    if (!polygon) return false;
-    GeometryPtr triangles(GEOSConstrainedDelaunayTriangulation_r(geos, polygon.get()), {geos});
+/// Triangles of a valid polygon in the city plane, from GEOS's constrained Delaunay triangulation.
+bool triangulateFootprint(GEOSContextHandle_t geos, const GEOSGeometry* polygon, std::vector<std::array<Vec2d, 3>>& out) {
+    GeometryPtr triangles(GEOSConstrainedDelaunayTriangulation_r(geos, polygon), {geos});
     if (!triangles) return false;
     int count = GEOSGetNumGeometries_r(geos, triangles.get());
     for (int i = 0; i < count; ++i) {
@@ -147,11 +147,18 @@ void addWalls(const Ring& ring, bool isHole, const Ring& outer, double bottom, c
 
 } // namespace
 
-bool meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleInfo wallInfo, TriangleInfo roofInfo,
-                  const WallContext* facade, TriangleMesh& mesh, std::vector<WallRecord>& walls,
-                  BuildingTriangleCounts& counts) {
+const char* meshBuilding(GEOSContextHandle_t geos, const Building& original, TriangleInfo wallInfo, TriangleInfo roofInfo,
+                         const WallContext* facade, TriangleMesh& mesh, std::vector<WallRecord>& walls,
+                         BuildingTriangleCounts& counts) {
+    std::optional<CleanedFootprint> cleaned = cleanFootprint(original.footprint);
+    if (!cleaned) return "degenerate_footprint";
+    Building building = original;
+    building.footprint = std::move(cleaned->polygon);
+    const GeometryPtr polygon = makePolygon(geos, building.footprint);
+    if (!polygon || GEOSisValid_r(geos, polygon.get()) != 1) return "invalid_footprint";
     std::vector<std::array<Vec2d, 3>> footprint;
-    if (!triangulateFootprint(geos, building.footprint, footprint)) return false;
+    if (!triangulateFootprint(geos, polygon.get(), footprint)) return "triangulation_failed";
+    counts.holesDropped += cleaned->holesDropped;
     const RoofResult roof = meshRoof(building, footprint, roofInfo, wallInfo, mesh);
     counts.roofs += roof.roofTriangles;
     counts.walls += roof.wallTriangles;
@@ -169,7 +176,7 @@ bool meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleIn
     addWalls(outer, false, outer, bottom, roof, bands, roofSink, wallInfo, facade, wallIndex, mesh, walls, counts);
     for (const Ring& hole : building.footprint.holes)
         addWalls(hole, true, outer, bottom, roof, bands, roofSink, wallInfo, facade, wallIndex, mesh, walls, counts);
-    return true;
+    return nullptr;
 }
 
 } // namespace urbis

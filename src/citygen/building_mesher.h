@@ -24,12 +24,16 @@ struct BuildingTriangleCounts {
     std::map<std::string, uint64_t> roofFallbacks;  ///< roofs meshed as a simpler shape, by reason
     size_t wallRecords = 0;   ///< procedural walls
     size_t plainWalls = 0;    ///< walls too small for a facade (two triangles each)
+    size_t holesDropped = 0;  ///< footprint holes cleanFootprint dropped
 };
 
-/// Appends the walls and caps of `building`: plain walls and caps to `mesh`, walls with a facade
-/// (when `facade` is given; all plain when null) to `walls`. Returns false (appending nothing)
-/// when GEOS cannot triangulate the footprint. `geos` is a per-thread GEOS context.
-bool meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleInfo wallInfo, TriangleInfo roofInfo,
+/// Appends the walls and caps of `building` over its cleaned footprint (citygen/footprint_cleaning.h):
+/// plain walls and caps to `mesh`, walls with a facade (when `facade` is given; all plain when null)
+/// to `walls`. Returns null, or, appending nothing, why the building cannot be meshed:
+/// "degenerate_footprint" (nothing left after cleaning), "invalid_footprint" (not a valid polygon
+/// for GEOS, which is then not asked to triangulate it), "triangulation_failed". `geos` is a
+/// per-thread GEOS context.
+const char* meshBuilding(GEOSContextHandle_t geos, const Building& building, TriangleInfo wallInfo, TriangleInfo roofInfo,
                   const WallContext* facade, TriangleMesh& mesh, std::vector<WallRecord>& walls,
                   BuildingTriangleCounts& counts);
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <tuple>
 
 namespace urbis {
@@ -56,8 +57,28 @@ struct Chunk {
     TriangleMesh mesh;
     std::vector<WallRecord> walls;
     BuildingTriangleCounts counts;
-    uint64_t failed = 0;
+    std::map<std::string, uint64_t> dropped;
 };
+
+/// Meshes one building into `chunk`; a building that cannot be meshed, or whose meshing throws
+/// (a library's exception, an allocation that fails), leaves nothing in it and is counted: one
+/// building never ends a city.
+void meshBuildingInto(GEOSContextHandle_t geos, const Building& building, TriangleInfo wallInfo, TriangleInfo roofInfo,
+                      const WallContext* facade, Chunk& chunk) {
+    const size_t triangles = chunk.mesh.size(), walls = chunk.walls.size();
+    const BuildingTriangleCounts counts = chunk.counts;
+    const char* reason = nullptr;
+    try {
+        reason = meshBuilding(geos, building, wallInfo, roofInfo, facade, chunk.mesh, chunk.walls, chunk.counts);
+    } catch (const std::exception&) {
+        reason = "mesh_failed";
+        chunk.mesh.triangles.resize(triangles);
+        chunk.mesh.info.resize(triangles);
+        chunk.walls.resize(walls);
+        chunk.counts = counts;
+    }
+    if (reason) ++chunk.dropped[reason];
+}
 
 constexpr size_t kChunk = 256;
 
@@ -121,22 +142,20 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
         Chunk& chunk = chunks[c];
         size_t end = std::min(city.buildings.size(), (c + 1) * kChunk);
         for (size_t i = c * kChunk; i < end; ++i)
-            if (!meshBuilding(geos, city.buildings[i], wallInfo[i], roofInfo[i], options.geometry.walls != Representation::Plain ? &facades[i] : nullptr,
-                              chunk.mesh, chunk.walls,
-                              chunk.counts))
-                ++chunk.failed;
+            meshBuildingInto(geos, city.buildings[i], wallInfo[i], roofInfo[i],
+                             options.geometry.walls != Representation::Plain ? &facades[i] : nullptr, chunk);
         GEOS_finish_r(geos);
     });
 
     size_t walls = 0, roofs = 0;
-    uint64_t failed = 0;
     for (const Chunk& chunk : chunks) {
         out.mesh.append(chunk.mesh);
         out.walls.insert(out.walls.end(), chunk.walls.begin(), chunk.walls.end());
         walls += chunk.counts.walls;
         roofs += chunk.counts.roofs;
-        failed += chunk.failed;
+        out.holesDropped += chunk.counts.holesDropped;
         for (const auto& [reason, n] : chunk.counts.roofFallbacks) out.roofFallbacks[reason] += n;
+        for (const auto& [reason, n] : chunk.dropped) out.dropped[reason] += n;
     }
     for (const Triangle& t : out.mesh.triangles) {
         out.cityBounds.extend(t.p0);
@@ -152,7 +171,6 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     out.groundMaterial = groundMaterial;
     out.trianglesByKind = {{"walls", walls}, {"roofs", roofs}};
     if (options.geometry.walls == Representation::Triangles) meshWallTwins(options, out);
-    if (failed) out.dropped["triangulation_failed"] = failed;
     return out;
 }
 

@@ -29,12 +29,15 @@ struct CityMesh {
     std::map<std::string, size_t> trianglesByKind;
     size_t facadeWalls = 0;                    ///< walls with a facade, in either representation
     size_t facadeCells = 0;                    ///< their floors x slots
-    std::map<std::string, uint64_t> dropped;   ///< buildings that could not be meshed, by reason
+    /// Buildings that could not be meshed, by reason: meshBuilding's, or "mesh_failed" where meshing threw.
+    std::map<std::string, uint64_t> dropped;
+    uint64_t holesDropped = 0;                 ///< footprint holes the cleaning dropped (citygen/footprint_cleaning.h)
     std::map<std::string, uint64_t> roofFallbacks;  ///< roofs meshed as a simpler shape (unknown shape -> flat, ...), by reason
 };
 
 /// Meshes the whole city (object id of building i is i + 1; 0 is the ground) in parallel; the
-/// result does not depend on the thread count. With walls=triangles the facades' triangle twin
+/// result does not depend on the thread count. No building's input or failure ends the city: a
+/// building that cannot be meshed is left out and counted in `dropped`. With walls=triangles the facades' triangle twin
 /// is estimated first and InputError thrown, before building it, if it would not fit in memory.
 CityMesh meshCity(const CityModel& city, const CityMeshOptions& options = {});
 

@@ -133,9 +133,9 @@ RoofResult meshRoof(const Building& building, const FootprintTriangles& footprin
     if (parapet || gablesPerWing || shape == RoofShape::Hipped || shape == RoofShape::Mansard ||
         (shape == RoofShape::Pyramidal && !convex)) {
         skeleton = interiorStraightSkeleton(polygon);
-        if (!skeleton && shape != RoofShape::Flat && !gablesPerWing) {
+        if (!skeleton && !gablesPerWing) {  // hipped or mansard -> pyramidal (convex) -> flat; parapet -> plain flat
             result.fallbacks.push_back("skeleton_failed");
-            shape = RoofShape::Flat;
+            if (shape != RoofShape::Flat) shape = convex && shape != RoofShape::Pyramidal ? RoofShape::Pyramidal : RoofShape::Flat;
         }
     }
 

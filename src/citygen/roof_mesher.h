@@ -35,8 +35,9 @@ double roofHeightOf(const Building& building, RoofShape shape, double depth, dou
 /// footprint, with vertical gables wherever the roof stands above a footprint edge; hipped, mansard,
 /// and pyramidal on non-convex footprints follow the straight skeleton; dome and onion are rings
 /// scaled about the centroid on convex near-square footprints (else hipped); flat roofs of buildings
-/// taller than 8 m get a parapet. An unknown shape, or a skeleton CGAL cannot build, falls back to
-/// flat, and the reason is listed in `fallbacks`.
+/// taller than 8 m get a parapet. An unknown shape falls back to flat; where CGAL cannot build the
+/// skeleton, hipped and mansard fall back to pyramidal on convex footprints, else to flat, and a
+/// parapet to a plain flat roof; each reason is listed in `fallbacks`.
 RoofResult meshRoof(const Building& building, const FootprintTriangles& footprint, TriangleInfo roofInfo,
                     TriangleInfo wallInfo, TriangleMesh& mesh);
 

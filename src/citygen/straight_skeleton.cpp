@@ -2,23 +2,63 @@
 #include "citygen/straight_skeleton.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_2.h>
-#include <CGAL/create_straight_skeleton_2.h>
+#include <CGAL/Straight_skeleton_builder_2.h>
 
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 namespace urbis {
 
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using CgalPolygon = CGAL::Polygon_2<Kernel>;
+using Skeleton = CGAL::Straight_skeleton_2<Kernel>;
 
-CgalPolygon cgalPolygon(const Ring& ring) {
-    CgalPolygon polygon;
-    for (const Vec2d& p : ring) polygon.push_back(Kernel::Point_2(p.x, p.y));
-    return polygon;
+/// Stops a skeleton whose construction does not end: the builder catches what its visitor throws
+/// and returns no skeleton. A skeleton has fewer nodes than twice its contour's vertices, each made
+/// by one event; a builder that loops processes events without end.
+class EventBudget : public CGAL::Dummy_straight_skeleton_builder_2_visitor<Skeleton> {
+public:
+    explicit EventBudget(size_t contourVertices) : left_(kEventsPerVertex * contourVertices + 64) {}
+    void on_edge_event_processed(const Vertex_const_handle&, const Vertex_const_handle&, const Vertex_const_handle&) const { spend(); }
+    void on_split_event_processed(const Vertex_const_handle&, const Vertex_const_handle&, const Vertex_const_handle&) const { spend(); }
+    void on_pseudo_split_event_processed(const Vertex_const_handle&, const Vertex_const_handle&, const Vertex_const_handle&,
+                                         const Vertex_const_handle&) const { spend(); }
+
+private:
+    static constexpr size_t kEventsPerVertex = 16;
+    void spend() const {
+        if (left_-- == 0) throw std::runtime_error("straight skeleton: event budget spent");
+    }
+    mutable size_t left_;  // the builder calls its visitor through a const reference
+};
+
+using Builder = CGAL::Straight_skeleton_builder_2<CGAL::Straight_skeleton_builder_traits_2<Kernel>, Skeleton, EventBudget>;
+
+/// CGAL's skeleton of the footprint, or null where CGAL gives none, throws or would take too long.
+boost::shared_ptr<Skeleton> cgalSkeleton(const Polygon& footprint) {
+    size_t vertices = footprint.outer.size();
+    for (const Ring& hole : footprint.holes) vertices += hole.size();
+    if (vertices > kMaxSkeletonVertices) return nullptr;
+    auto points = [](const Ring& ring) {
+        std::vector<Kernel::Point_2> out;
+        for (const Vec2d& p : ring) out.emplace_back(p.x, p.y);
+        return out;
+    };
+    try {
+        const EventBudget budget(vertices);
+        Builder builder(boost::none, Builder::Traits(), budget);
+        const std::vector<Kernel::Point_2> outer = points(footprint.outer);
+        builder.enter_contour(outer.begin(), outer.end());
+        for (const Ring& hole : footprint.holes) {
+            const std::vector<Kernel::Point_2> ring = points(hole);
+            builder.enter_contour(ring.begin(), ring.end());
+        }
+        return builder.construct_skeleton();
+    } catch (const std::exception&) {  // CGAL::Failure_exception: CGAL_error(), and in Debug builds every assertion
+        return nullptr;
+    }
 }
 
 /// Merges points closer than `tolerance` (the skeleton of symmetric footprints has several nodes at one place).
@@ -51,11 +91,7 @@ private:
 
 std::optional<StraightSkeleton> interiorStraightSkeleton(const Polygon& footprint) {
     if (footprint.outer.size() < 3) return std::nullopt;
-    const CgalPolygon outer = cgalPolygon(footprint.outer);
-    std::vector<CgalPolygon> holes;
-    for (const Ring& hole : footprint.holes) holes.push_back(cgalPolygon(hole));
-    const auto skeleton = CGAL::create_interior_straight_skeleton_2(outer.vertices_begin(), outer.vertices_end(),
-                                                                    holes.begin(), holes.end(), Kernel());
+    const boost::shared_ptr<Skeleton> skeleton = cgalSkeleton(footprint);
     if (!skeleton) return std::nullopt;
 
     StraightSkeleton out;

@@ -19,10 +19,15 @@ struct StraightSkeleton {
     double maxTime = 0;                         ///< m: the largest time (half the width of the widest part)
 };
 
-/// The interior straight skeleton of `footprint` (outer ring counter-clockwise, holes clockwise),
-/// by CGAL::create_interior_straight_skeleton_2 with the Exact_predicates_inexact_constructions_kernel
-/// (Aichholzer & Aurenhammer, "Straight skeletons for general polygonal figures", 1996).
-/// Returns nothing when CGAL cannot build it (degenerate input).
+/// Footprints with more vertices than this (all rings) get no skeleton: CGAL's time and memory
+/// grow faster than the vertex count, and no building needs that many.
+inline constexpr size_t kMaxSkeletonVertices = 4096;
+
+/// The interior straight skeleton of `footprint` (outer ring counter-clockwise, holes clockwise and
+/// strictly inside; cleanFootprint makes it so), by CGAL's Straight_skeleton_builder_2 with the
+/// Exact_predicates_inexact_constructions_kernel (Aichholzer & Aurenhammer, "Straight skeletons for
+/// general polygonal figures", 1996). Returns nothing when CGAL cannot build it: degenerate input,
+/// a CGAL exception, more than kMaxSkeletonVertices, or more events than a skeleton needs.
 std::optional<StraightSkeleton> interiorStraightSkeleton(const Polygon& footprint);
 
 } // namespace urbis

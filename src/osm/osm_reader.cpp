@@ -15,6 +15,8 @@
 #include <osmium/io/any_input.hpp>
 #include <osmium/visitor.hpp>
 
+#include <unordered_set>
+
 namespace urbis {
 
 RawFeatures readOsm(const std::string& path, const ImportOptions& options) {
@@ -33,7 +35,19 @@ RawFeatures readOsm(const std::string& path, const ImportOptions& options) {
         if (box.valid())
             features.headerBox = {box.bottom_left().lon(), box.bottom_left().lat(),
                                   box.top_right().lon(), box.top_right().lat()};
-        osmium::apply(reader, multipolygons, catalogue);
+        // libosmium's relations database reads outside its stash when two relations share an id
+        // (the second one's members point at the first once it is complete and removed): each id
+        // goes to it once, and the repeats are counted.
+        std::unordered_set<osmium::object_id_type> relationIds;
+        while (osmium::memory::Buffer buffer = reader.read())
+            for (const osmium::Relation& relation : buffer.select<osmium::Relation>()) {
+                if (!relationIds.insert(relation.id()).second) {
+                    ++features.issues["relation_duplicate_id"];
+                    continue;
+                }
+                multipolygons.relation(relation);
+                catalogue.relation(relation);
+            }
         reader.close();
     }
     multipolygons.prepare_for_lookup();
