@@ -210,9 +210,10 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
     SceneMemory memory = scene.memory();
     // Import and meshing use their own reasons (docs/cli.md); the meshed roofs' fallbacks count as repairs.
     nlohmann::json dropped(cityMesh.dropped), repaired = nlohmann::json::object();
-    for (const auto& [reason, entry] : city.dropped) dropped[reason] = entry.count;
+    for (const auto& [reason, entry] : city.dropped) dropped[reason] = dropped.value(reason, uint64_t(0)) + entry.count;
     for (const auto& [reason, entry] : city.repaired) repaired[reason] = entry.count;
     for (const auto& [reason, n] : cityMesh.roofFallbacks) repaired["roof_" + reason] = n;
+    if (cityMesh.holesDropped) repaired["footprint_hole_dropped"] = cityMesh.holesDropped;
     nlohmann::json stats = {
         {"source", city.source},
         {"counts", countsJson(city)},

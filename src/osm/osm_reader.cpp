@@ -42,7 +42,7 @@ RawFeatures readOsm(const std::string& path, const ImportOptions& options) {
         while (osmium::memory::Buffer buffer = reader.read())
             for (const osmium::Relation& relation : buffer.select<osmium::Relation>()) {
                 if (!relationIds.insert(relation.id()).second) {
-                    ++features.issues["relation_duplicate_id"];
+                    record(features.dropped, "relation_duplicate_id", {OsmType::Relation, relation.id()});
                     continue;
                 }
                 multipolygons.relation(relation);
