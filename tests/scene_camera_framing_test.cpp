@@ -1,4 +1,4 @@
-// frameCity: every corner of the city's bounds projects inside the image, whatever its shape.
+// frameCity: every corner of the city's bounds (or of its pieces) projects inside the image, whatever its shape.
 #include "scene/camera_framing.h"
 
 #include <gtest/gtest.h>
@@ -77,5 +77,34 @@ TEST(CameraFraming, TheCityFillsTheFrameOnOneAxis) {
         EXPECT_GT(span, 0.95f) << "aspect " << aspect << ": the city is framed too small";
         EXPECT_NEAR(box[0] + box[2], 1.0f, 1e-3f) << "not centred across";
         EXPECT_NEAR(box[1] + box[3], 1.0f, 1e-3f) << "not centred up and down";
+    }
+}
+
+TEST(CameraFraming, PiecesCentreTheCityItselfNotItsBox) {
+    // An L of low blocks around an empty near (south-west) quarter, a tower at its far end: the one box's
+    // near bottom corner holds no building, and framing the box leaves the city off-centre.
+    const Bounds3f pieces[] = {{{-1000, 0, -1000}, {1000, 20, -800}},
+                               {{800, 0, -1000}, {1000, 20, 1000}},
+                               {{900, 0, -1000}, {1000, 300, -900}}};
+    Bounds3f all;
+    for (const Bounds3f& p : pieces) all.extend(p);
+    // The film box of all the pieces' corners under a camera.
+    const auto filmBox = [&pieces](const Camera& camera) {
+        std::array<float, 4> film{1e30f, 1e30f, -1e30f, -1e30f};
+        for (const Bounds3f& p : pieces) {
+            const std::array<float, 4> box = projectedBox(camera, p);
+            film = {std::min(film[0], box[0]), std::min(film[1], box[1]), std::max(film[2], box[2]),
+                    std::max(film[3], box[3])};
+        }
+        return film;
+    };
+    for (float aspect : {0.75f, 16.0f / 9.0f}) {
+        SCOPED_TRACE(::testing::Message() << "aspect " << aspect);
+        const std::array<float, 4> tight = filmBox(frameCity(pieces, 50.0f, aspect));
+        EXPECT_NEAR(tight[0] + tight[2], 1.0f, 1e-3f);
+        EXPECT_NEAR(tight[1] + tight[3], 1.0f, 1e-3f);
+        EXPECT_GT(std::max(tight[2] - tight[0], tight[3] - tight[1]), 0.95f) << "framed too small";
+        const std::array<float, 4> loose = filmBox(frameCity(all, 50.0f, aspect));
+        EXPECT_GT(std::abs(loose[1] + loose[3] - 1.0f), 0.05f) << "the box alone would frame this city as well";
     }
 }

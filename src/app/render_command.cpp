@@ -118,7 +118,7 @@ void scaleHeights(CityModel& city, float scale) {
     }
 }
 
-Camera chooseCamera(const RenderOptions& o, const CityModel& city, const Bounds3f& cityBounds) {
+Camera chooseCamera(const RenderOptions& o, const CityModel& city, const CityMesh& mesh) {
     float aspect = float(o.settings.width) / float(o.settings.height);
     if (!o.camera.empty()) {
         std::vector<double> c = parseNumberList("--camera", o.camera, ',', 6, 6);
@@ -132,7 +132,7 @@ Camera chooseCamera(const RenderOptions& o, const CityModel& city, const Bounds3
         return cameraFromHeading(Vec3f{float(local.x), float(c[2]), float(-local.y)}, float(c[3]), float(c[4]),
                                  o.fovDeg, aspect);
     }
-    return frameCity(cityBounds, o.fovDeg, aspect);
+    return frameCity(mesh.framingPieces, o.fovDeg, aspect);
 }
 
 /// Says on stderr what is wrong with the camera, or with --strict fails on the first problem.
@@ -194,7 +194,7 @@ PreparedScene prepareScene(const RenderOptions& o, size_t memoryLimit) {
     p.scene.sun = sun;
     p.secondsBvh = secondsSince(t0);
 
-    p.camera = chooseCamera(o, p.city, p.mesh.cityBounds);
+    p.camera = chooseCamera(o, p.city, p.mesh);
     checkCamera(o, p.camera, p.city, p.mesh.cityBounds);
     return p;
 }

@@ -82,6 +82,32 @@ void meshBuildingInto(GEOSContextHandle_t geos, const Building& building, Triang
 
 constexpr size_t kChunk = 256;
 
+/// Calls f(p) for every vertex of the city's triangles and two opposite corners of each wall (a wall is
+/// an upright rectangle: those two bound it).
+template <typename F>
+void forEachCityPoint(const CityMesh& mesh, F&& f) {
+    for (const Triangle& t : mesh.mesh.triangles) f(t.p0), f(t.p1), f(t.p2);
+    for (const WallRecord& w : mesh.walls) f(w.worldFromWall(0, 0, 0)), f(w.worldFromWall(w.width, w.height, 0));
+}
+
+/// Columns of the framing grid along x and z.
+constexpr int kFramingCells = 8;
+
+/// The bounds of the city's points in each column of a kFramingCells^2 grid over cityBounds.
+std::vector<Bounds3f> framingPieces(const CityMesh& mesh) {
+    std::vector<Bounds3f> pieces(kFramingCells * kFramingCells);
+    if (mesh.cityBounds.empty()) return {};
+    const Bounds3f& b = mesh.cityBounds;
+    const auto cell = [](float v, float lo, float hi) {
+        return hi > lo ? std::clamp(int((v - lo) / (hi - lo) * kFramingCells), 0, kFramingCells - 1) : 0;
+    };
+    forEachCityPoint(mesh, [&](Vec3f p) {
+        pieces[cell(p.x, b.lo.x, b.hi.x) * kFramingCells + cell(p.z, b.lo.z, b.hi.z)].extend(p);
+    });
+    std::erase_if(pieces, [](const Bounds3f& piece) { return piece.empty(); });
+    return pieces;
+}
+
 /// Replaces the procedural walls by their triangle twin, after checking that it fits in memory.
 void meshWallTwins(const CityMeshOptions& options, CityMesh& out) {
     const size_t twinTriangles = tbb::parallel_reduce(
@@ -157,16 +183,9 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
         for (const auto& [reason, n] : chunk.counts.roofFallbacks) out.roofFallbacks[reason] += n;
         for (const auto& [reason, n] : chunk.dropped) out.dropped[reason] += n;
     }
-    for (const Triangle& t : out.mesh.triangles) {
-        out.cityBounds.extend(t.p0);
-        out.cityBounds.extend(t.p1);
-        out.cityBounds.extend(t.p2);
-    }
-    for (const WallRecord& w : out.walls) {
-        out.cityBounds.extend(w.worldFromWall(0, 0, 0));
-        out.cityBounds.extend(w.worldFromWall(w.width, w.height, 0));
-        out.facadeCells += size_t(w.floors) * w.slots;
-    }
+    forEachCityPoint(out, [&out](Vec3f p) { out.cityBounds.extend(p); });
+    out.framingPieces = framingPieces(out);
+    for (const WallRecord& w : out.walls) out.facadeCells += size_t(w.floors) * w.slots;
     out.facadeWalls = out.walls.size();
     out.groundMaterial = groundMaterial;
     out.trianglesByKind = {{"walls", walls}, {"roofs", roofs}};

@@ -26,6 +26,7 @@ struct CityMesh {
     std::vector<Material> materials;
     uint32_t groundMaterial = 0;               ///< the ground plane's entry in materials
     Bounds3f cityBounds;                       ///< world bounds of the buildings (ground excluded)
+    std::vector<Bounds3f> framingPieces;       ///< bounds of the buildings in columns of a grid over cityBounds: its shape, for frameCity
     std::map<std::string, size_t> trianglesByKind;
     size_t facadeWalls = 0;                    ///< walls with a facade, in either representation
     size_t facadeCells = 0;                    ///< their floors x slots

@@ -4,12 +4,20 @@
 #include "math/sampling.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace urbis {
 
 Camera frameCity(const Bounds3f& cityBounds, float fovYDeg, float aspect) {
-    Bounds3f b = cityBounds;
-    if (b.empty()) b = Bounds3f{Vec3f{-50, 0, -50}, Vec3f{50, 20, 50}};
+    return frameCity(std::span<const Bounds3f>(&cityBounds, 1), fovYDeg, aspect);
+}
+
+Camera frameCity(std::span<const Bounds3f> pieces, float fovYDeg, float aspect) {
+    std::vector<Bounds3f> kept;
+    Bounds3f b;
+    for (const Bounds3f& piece : pieces)
+        if (!piece.empty()) kept.push_back(piece), b.extend(piece);
+    if (kept.empty()) kept = {b = Bounds3f{Vec3f{-50, 0, -50}, Vec3f{50, 20, 50}}};
     const Vec3f centre = b.centre();
     const Vec3f towardsCamera = directionFromElevationAzimuth(22.0f, 225.0f);
     // The view's orientation does not depend on where the camera stands: take it from one 1 m away.
@@ -17,9 +25,12 @@ Camera frameCity(const Bounds3f& cityBounds, float fovYDeg, float aspect) {
     const float tanY = oriented.tanHalfFovY * (1.0f - kFramingMargin);
     const float tans[2] = {tanY * aspect, tanY};
     const Vec3f axes[2] = {oriented.right, oriented.up};
-    Vec3f corners[8];
-    for (int i = 0; i < 8; ++i)
-        corners[i] = Vec3f{i & 1 ? b.hi.x : b.lo.x, i & 2 ? b.hi.y : b.lo.y, i & 4 ? b.hi.z : b.lo.z} - centre;
+    std::vector<Vec3f> corners;
+    corners.reserve(8 * kept.size());
+    for (const Bounds3f& piece : kept)
+        for (int i = 0; i < 8; ++i)
+            corners.push_back(Vec3f{i & 1 ? piece.hi.x : piece.lo.x, i & 2 ? piece.hi.y : piece.lo.y,
+                                    i & 4 ? piece.hi.z : piece.lo.z} - centre);
     // The camera stands at centre + a right + c up - d forward. A corner q (relative to the centre) has
     // depth q.f + d, and lies inside the image across an axis when |q.axis - shift| <= tan (q.f + d):
     // shift >= q.axis - tan q.f - tan d and shift <= q.axis + tan q.f + tan d over all corners. The least
