@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kCrashers = fs::path(__FILE__).parent_path() / "fuzz_crashers";
+const fs::path kCrashers = URBIS_FUZZ_CRASHERS;
 
 /// The crashers: .osm and .osm.pbf files (the format comes from the name).
 std::vector<fs::path> crashers() {

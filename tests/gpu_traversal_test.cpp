@@ -34,7 +34,7 @@ void expectSameHitsOnGpuAndCpu(const std::string& osmFile, uint32_t count) {
     CityMesh mesh = meshCity(city);
     Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls);
     scene.ground = GroundPlane{0.0f, mesh.groundMaterial, true};
-    ASSERT_GT(scene.triangles.size(), 300u);
+    ASSERT_GT(scene.triangles.size(), 200u);  // the village: 284 roof and plain-wall triangles, SF 100,000s
     ASSERT_GT(scene.walls.size(), 50u);
     std::vector<Ray> rays = randomRays(mesh.cityBounds, count, 4242u);
 

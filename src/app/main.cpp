@@ -64,6 +64,10 @@ int main(int argc, char** argv) {
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "urbis: out of memory (try fewer buildings, a smaller --bbox or a smaller image)\n");
         return int(urbis::FailureKind::OutOfMemory);
+    } catch (const std::exception& e) {
+        // A library's own exception no check above foresaw: still one line and an exit code, never an abort.
+        std::fprintf(stderr, "urbis: %s (an unexpected failure: please report it with the input)\n", e.what());
+        return int(urbis::FailureKind::BadInput);
     }
     return 0;
 }

@@ -79,7 +79,9 @@ void FeatureCollector::way(const osmium::Way& way) {
     if (role != PolygonRole::None) {
         std::vector<GeoPolygon> polygons(1);
         const char* problem = nullptr;
-        if (!way.is_closed()) problem = "unclosed_way";
+        // is_closed() reads the last node, which a way without nodes does not have.
+        if (way.nodes().empty()) problem = "degenerate_footprint";
+        else if (!way.is_closed()) problem = "unclosed_way";
         else if (!locationsOf(way.nodes(), polygons[0].outer)) problem = "incomplete_geometry";
         if (problem) polygons.clear();
         addPolygonFeature(role, tags, way.id(), std::move(polygons), problem);
