@@ -1,8 +1,8 @@
 // Small hand-written .osm files through the whole importer: multipolygon holes, parts
 // replacing outlines, underground drops, ring cleaning and orientation, repairs and drops,
 // road clipping.
+#include "model/polygon_ops.h"
 #include "osm/osm_import.h"
-#include "osm/polygon_ops.h"
 
 #include "process_scratch_dir.h"
 

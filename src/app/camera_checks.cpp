@@ -1,6 +1,6 @@
 #include "app/camera_checks.h"
 
-#include "osm/polygon_ops.h"
+#include "model/polygon_ops.h"
 
 #include <cmath>
 #include <cstdio>
@@ -16,10 +16,7 @@ const Building* buildingAt(const CityModel& city, Vec3f p) {
         if (p.y < b.minHeight || p.y > b.height) continue;
         const std::array<Vec2d, 2> box = bounds(b.footprint.outer);
         if (local.x < box[0].x || local.x > box[1].x || local.y < box[0].y || local.y > box[1].y) continue;
-        if (!contains(b.footprint.outer, local)) continue;
-        bool inHole = false;
-        for (const Ring& hole : b.footprint.holes) inHole = inHole || contains(hole, local);
-        if (!inHole) return &b;
+        if (contains(b.footprint, local)) return &b;
     }
     return nullptr;
 }

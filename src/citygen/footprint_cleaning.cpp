@@ -1,6 +1,6 @@
 #include "citygen/footprint_cleaning.h"
 
-#include "osm/polygon_ops.h"
+#include "model/polygon_ops.h"
 
 #include <algorithm>
 #include <cmath>

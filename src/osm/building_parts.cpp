@@ -1,7 +1,7 @@
 #include "osm/building_parts.h"
 
+#include "model/polygon_ops.h"
 #include "osm/cell_grid.h"
-#include "osm/polygon_ops.h"
 
 #include <algorithm>
 
@@ -10,12 +10,6 @@ namespace urbis {
 namespace {
 
 constexpr double kCell = 64.0; // m, grid cell of the outline index
-
-bool holds(const Polygon& outline, Vec2d p) {
-    if (!contains(outline.outer, p)) return false;
-    return std::none_of(outline.holes.begin(), outline.holes.end(),
-                        [p](const Ring& hole) { return contains(hole, p); });
-}
 
 bool overlaps(const std::array<Vec2d, 2>& a, const std::array<Vec2d, 2>& b) {
     return a[0].x <= b[1].x && b[0].x <= a[1].x && a[0].y <= b[1].y && b[0].y <= a[1].y;
@@ -39,7 +33,7 @@ void replaceOutlinesByParts(std::vector<Building>& buildings, const GeosContext&
         const Vec2d c = centroid(part.outer);
         bool found = false;
         grid.query({c, c}, [&](uint32_t j) {
-            if (holds(buildings[j].footprint, c)) replaced[j] = 1, found = true;
+            if (contains(buildings[j].footprint, c)) replaced[j] = 1, found = true;
         });
         if (found) continue;
         const double partArea = area(part);

@@ -1,8 +1,8 @@
 #include "osm/city_builder.h"
 
+#include "model/polygon_ops.h"
 #include "osm/building_parts.h"
 #include "osm/geos_polygon.h"
-#include "osm/polygon_ops.h"
 
 #include <algorithm>
 

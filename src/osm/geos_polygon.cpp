@@ -1,6 +1,6 @@
 #include "osm/geos_polygon.h"
 
-#include "osm/polygon_ops.h"
+#include "model/polygon_ops.h"
 
 #include <geos_c.h>
 

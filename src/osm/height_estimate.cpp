@@ -1,10 +1,10 @@
 #include "osm/height_estimate.h"
 
 #include "math/quantile.h"
+#include "model/polygon_ops.h"
 #include "osm/building_tags.h"
 #include "osm/cell_grid.h"
 #include "osm/height_table.h"
-#include "osm/polygon_ops.h"
 
 #include <algorithm>
 #include <optional>

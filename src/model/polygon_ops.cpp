@@ -1,4 +1,4 @@
-#include "osm/polygon_ops.h"
+#include "model/polygon_ops.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +53,11 @@ bool contains(const Ring& ring, Vec2d p) {
             inside = !inside;
     }
     return inside;
+}
+
+bool contains(const Polygon& polygon, Vec2d p) {
+    return contains(polygon.outer, p) &&
+           std::none_of(polygon.holes.begin(), polygon.holes.end(), [p](const Ring& hole) { return contains(hole, p); });
 }
 
 void orient(Polygon& polygon) {

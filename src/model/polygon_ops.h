@@ -20,6 +20,9 @@ Vec2d centroid(const Ring& ring);
 /// Whether a point lies inside a ring (even-odd rule).
 bool contains(const Ring& ring, Vec2d p);
 
+/// Whether a point lies inside a polygon: in its outer ring and in none of its holes.
+bool contains(const Polygon& polygon, Vec2d p);
+
 /// Turns the outer ring counter-clockwise and the holes clockwise.
 void orient(Polygon& polygon);
 
