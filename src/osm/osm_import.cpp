@@ -71,10 +71,11 @@ CityModel importOsm(const std::string& path, const ImportOptions& options) {
     if (header.valid()) city.headerBox = {true, header.minLon, header.minLat, header.maxLon, header.maxLat};
     city.cropBox = {true, box.minLon, box.minLat, box.maxLon, box.maxLat};
     city.cropBoxSource = boxSource;
-    paintUntaggedBuildings(city);
     if (city.buildings.empty())
         fail(path, "no buildings inside the box (" + std::to_string(box.minLon) + "," + std::to_string(box.minLat) +
                        "," + std::to_string(box.maxLon) + "," + std::to_string(box.maxLat) + ")");
+    // Both need the whole city: its region and, for heights, each building's tagged neighbours.
+    paintUntaggedBuildings(city);
     estimateHeights(city, options);
     city.source = std::filesystem::path(path).filename().string();
     return city;
