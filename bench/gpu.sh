@@ -14,7 +14,7 @@
 # Building there takes minutes of device time; binaries built here run there as they are. So
 # build here (cmake --build build --target urbis urbis_gpu_tests), copy build/urbis and
 # build/urbis_gpu_tests into a git-ignored folder, carry it with .deps, and run the other steps on
-# it: URBIS_BUILD_DIR=that-folder bench/gpu.sh test,bench (docs/gpu_notes.md, fifth session).
+# it: URBIS_BUILD_DIR=that-folder bench/gpu.sh test,bench (docs/gpu_notes.md § Measuring on the GPU machine).
 set -uo pipefail
 STEPS=",${1:-build,test,bench,cpu},"
 OUT=${OUT:-$PWD/gpu-out}

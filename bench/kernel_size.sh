@@ -1,6 +1,6 @@
 #!/bin/sh
 # Size of the CUDA kernels in instructions (sm_90 machine code, 16 bytes each), without a GPU: the
-# render kernel's size decides how often it waits on instruction fetches (docs/gpu_notes.md).
+# render kernel's size decides how often it waits on instruction fetches (docs/gpu_notes.md § Instruction cache).
 #   bench/kernel_size.sh [extra nvcc flags]
 set -eu
 cd "$(dirname "$0")/.."
