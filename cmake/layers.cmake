@@ -39,8 +39,11 @@ if(URBIS_HEADER_CHECK)
     add_library(urbis_header_check_cuda OBJECT ${urbis_cuda_header_units})
     set_target_properties(urbis_header_check_cuda PROPERTIES CUDA_STANDARD 20 CUDA_STANDARD_REQUIRED ON
       CUDA_EXTENSIONS OFF)
+    # urbis_gpu's flags and definitions, not the target itself: these units need not wait for the kernels.
     target_compile_options(urbis_header_check_cuda PRIVATE $<TARGET_PROPERTY:urbis_gpu,COMPILE_OPTIONS>)
-    target_link_libraries(urbis_header_check_cuda PRIVATE urbis_gpu CUDA::cudart_static)
+    target_compile_definitions(urbis_header_check_cuda PRIVATE
+      $<TARGET_PROPERTY:urbis_gpu,INTERFACE_COMPILE_DEFINITIONS>)
+    target_link_libraries(urbis_header_check_cuda PRIVATE urbis_core CUDA::cudart_static)
     add_dependencies(urbis_header_check urbis_header_check_cuda)
   endif()
 endif()
