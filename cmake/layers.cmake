@@ -1,4 +1,4 @@
-# The layers of src/ (docs/architecture.md, section Layers), checked two ways:
+# The layers of src/ (docs/architecture.md § Layers), checked two ways:
 #  - every header compiles on its own (libosmium's BUILD_HEADERS): one generated translation unit per
 #    header, `#include "x/y.h"` and nothing else, compiled with the project's warnings, so that a header
 #    leaning on what its includer happened to include first fails here and not in the next edit;
