@@ -2,7 +2,7 @@
 // meshCity, the path `urbis render --osm` takes before rendering. InputError is the clean answer
 // to bad input; anything else (another exception, a crash, a sanitizer report) is a finding.
 #include "citygen/city_mesher.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 #include "osm/osm_import.h"
 
 #include <unistd.h>

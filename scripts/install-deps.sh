@@ -10,6 +10,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev                 # command line, JSON, PNG, threads
   libgtest-dev libbenchmark-dev libembree-dev                           # tests, benchmarks, speed reference
   python-osmnx-doc                                                      # a tiny real OSM extract for the tests
+  python3                                                               # scripts/check_layers.py (ctest: layers)
 )
 
 missing=()

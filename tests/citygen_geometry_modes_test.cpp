@@ -2,7 +2,7 @@
 #include "citygen/city_mesher.h"
 #include "citygen/geometry_modes.h"
 #include "layout/city_layout.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // now import and mesh, or end in a clean InputError, through the library and the real command.
 #include "citygen/city_mesher.h"
 #include "cli_support.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 #include "osm/osm_import.h"
 
 #include <gtest/gtest.h>

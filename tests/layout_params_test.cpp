@@ -1,6 +1,6 @@
 // Generated city: parameter checks, determinism and building counts.
 #include "layout/city_layout.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>

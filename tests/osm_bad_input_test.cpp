@@ -1,5 +1,5 @@
 // Bad input files: each must give one InputError line that names the file.
-#include "model/input_error.h"
+#include "base/input_error.h"
 #include "osm/osm_import.h"
 
 #include "process_scratch_dir.h"

@@ -1,7 +1,7 @@
 // urbis_height_error FILE...: how well untagged heights are estimated on real extracts, as a
 // markdown table (docs/heights.md). For each file, half of the tagged buildings are hidden
 // and estimated from the rest, by the estimate and by the old seeded 20-100 m rule.
-#include "model/input_error.h"
+#include "base/input_error.h"
 #include "osm/height_estimate.h"
 #include "osm/height_evaluation.h"
 #include "osm/osm_import.h"

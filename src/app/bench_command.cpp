@@ -7,7 +7,7 @@
 #include "integrators/path_tracer.h"
 #include "film/image.h"
 #include "io/atomic_file.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>

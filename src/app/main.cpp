@@ -2,7 +2,7 @@
 #include "app/bench_command.h"
 #include "app/inspect_command.h"
 #include "app/render_command.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <cstdio>
 #include <cstring>

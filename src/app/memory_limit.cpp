@@ -1,7 +1,7 @@
 #include "app/memory_limit.h"
 
 #include "app/option_parsing.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 #include "scene/memory_budget.h"
 
 #include <cstdio>

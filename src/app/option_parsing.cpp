@@ -1,6 +1,6 @@
 #include "app/option_parsing.h"
 
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <cctype>
 #include <charconv>

@@ -1,6 +1,6 @@
 #include "app/output_paths.h"
 
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <algorithm>
 #include <cctype>

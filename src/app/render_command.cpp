@@ -9,7 +9,7 @@
 #include "cpu/cpu_renderer.h"
 #include "io/atomic_file.h"
 #include "layout/city_layout.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 #include "osm/geo_projection.h"
 #include "osm/osm_import.h"
 #include "scene/camera_framing.h"

@@ -1,6 +1,6 @@
 #include "app/render_device.h"
 
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <cstdio>
 #include <fstream>

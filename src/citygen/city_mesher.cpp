@@ -2,7 +2,7 @@
 
 #include "citygen/building_mesher.h"
 #include "citygen/facade_mesher.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 #include "scene/memory_budget.h"
 #include "scene/surface_part.h"
 

@@ -1,6 +1,6 @@
 #include "citygen/geometry_modes.h"
 
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <sstream>
 

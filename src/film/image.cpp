@@ -2,7 +2,7 @@
 
 #include "film/tone_map.h"
 #include "io/atomic_file.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <cerrno>
 #include <cmath>

@@ -2,7 +2,7 @@
 // CUDA-only header (included by .cu files alone).
 #pragma once
 
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <cuda_runtime.h>
 

@@ -2,7 +2,7 @@
 // instead of gpu_backend.cu when CMake finds no nvcc).
 #include "gpu/gpu_backend.h"
 
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 namespace urbis {
 

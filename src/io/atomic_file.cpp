@@ -1,6 +1,6 @@
 #include "io/atomic_file.h"
 
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <cerrno>
 #include <cstring>

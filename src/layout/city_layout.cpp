@@ -6,7 +6,7 @@
 #include "layout/street_furniture.h"
 #include "layout/street_grid.h"
 #include "math/hash.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -1,6 +1,6 @@
 #include "osm/osm_import.h"
 
-#include "model/input_error.h"
+#include "base/input_error.h"
 #include "osm/building_palette.h"
 #include "osm/city_builder.h"
 #include "osm/height_estimate.h"

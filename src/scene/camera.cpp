@@ -1,7 +1,7 @@
 #include "scene/camera.h"
 
 #include "math/sampling.h"
-#include "model/input_error.h"
+#include "base/input_error.h"
 
 namespace urbis {
 

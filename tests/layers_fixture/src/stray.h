@@ -1,0 +1,2 @@
+// Rejected: a file directly in src/ other than urbis.h is in no layer.
+#pragma once
