@@ -68,7 +68,7 @@ TEST(CliCommand, EachKindOfFailureHasItsCode) {
 }
 
 TEST(CliCommand, TheFormatFollowsTheExtension) {
-    for (const char* name : {"out.exr", "out.hdr", "out.jpg", "out"})
+    for (const char* name : {"out.tiff", "out.hdr", "out.jpg", "out"})
         expectFailure(kTiny + "--out " + name, 2, {"--out", name});
     expectFailure(kTiny + "--out out.png --stats s.txt", 2, {"--stats", ".txt"});
     expectFailure(kTiny + "--out out.png --stats out.png", 2, {"--stats", "out.png"});

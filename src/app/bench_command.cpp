@@ -5,7 +5,7 @@
 #include "app/render_device.h"
 #include "gpu/gpu_backend.h"
 #include "integrators/path_tracer.h"
-#include "film/image.h"
+#include "film/film_output.h"
 #include "io/atomic_file.h"
 #include "model/input_error.h"
 
