@@ -1,37 +1,24 @@
 // The film accumulates: samples added in any split of calls give the same bits, on any thread count.
 #include "cpu/cpu_renderer.h"
-#include "film_test_scene.h"
+#include "film_test_support.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
 #include <cstring>
+#include <optional>
 
 using namespace urbis;
 using namespace urbis::test;
 
 namespace {
 
-/// Whether two films hold the same bits in every array.
-void expectSameBits(const Film& a, const Film& b) {
-    ASSERT_EQ(a.width, b.width);
-    ASSERT_EQ(a.height, b.height);
-    int arrays = 0;
-    forEachFilmArray(
-        [&](auto, bool, const auto& x, const auto& y) {
-            ++arrays;
-            ASSERT_EQ(x.size(), y.size());
-            EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])), 0) << "array " << arrays;
-        },
-        a.arrays, b.arrays);
-    EXPECT_EQ(arrays, 9);
-}
-
-Film renderFilm(const Scene& scene, const RenderSettings& settings, std::initializer_list<uint32_t> calls) {
+Film renderFilm(const Scene& scene, const RenderSettings& settings, std::initializer_list<uint32_t> calls,
+                std::optional<Camera> camera = {}) {
     Film film(settings.width, settings.height, true);
     RenderCounters counters;
     for (uint32_t count : calls)
-        renderCpu(scene.view(), wallCamera(float(settings.width) / float(settings.height)), settings,
+        renderCpu(scene.view(), camera.value_or(wallCamera(float(settings.width) / float(settings.height))), settings,
                   film.nextSamples(count), film, false, counters);
     return film;
 }
@@ -44,8 +31,8 @@ TEST(FilmAccumulation, EightAndEightSamplesAreSixteenBitForBit) {
     const Film once = renderFilm(scene, settings, {16});
     const Film twice = renderFilm(scene, settings, {8, 8});
     EXPECT_EQ(once.samplesTaken(), 16u);
-    expectSameBits(once, twice);
-    expectSameBits(once, renderFilm(scene, settings, {1, 5, 10}));
+    expectSameFilmBits(once, twice);
+    expectSameFilmBits(once, renderFilm(scene, settings, {1, 5, 10}));
     // The scene is not trivial: the sun lights the wall unevenly and its mean differs from 8 spp's.
     const LinearImage eight = meanRadiance(renderFilm(scene, settings, {8}));
     const LinearImage sixteen = meanRadiance(once);
@@ -60,7 +47,7 @@ TEST(FilmAccumulation, SameFilmForAnyThreadCount) {
         return renderFilm(scene, settings, {2, 2});
     };
     const Film one = renderWith(1);
-    for (int threads : {2, 5}) expectSameBits(one, renderWith(threads));
+    for (int threads : {2, 5}) expectSameFilmBits(one, renderWith(threads));
 }
 
 TEST(FilmAccumulation, MeanIsTheSumOverTheSamples) {
@@ -102,4 +89,26 @@ TEST(FilmAccumulation, RefusesAFilmOfAnotherSize) {
     RenderCounters counters;
     EXPECT_THROW(renderCpu(scene.view(), wallCamera(1.0f), filmSettings(8, 9, 1), {0, 1}, film, false, counters),
                  std::invalid_argument);
+}
+
+// A black emitting wall under a black sky: a path sample's radiance is 1 exactly when its camera ray
+// hits the wall, so in the horizon's row, where the jitter decides, the AOV pass must count the
+// same hits as the path tracer: it traces the same camera rays.
+TEST(FilmAccumulation, AovPassTracesThePathTracersCameraRays) {
+    Scene scene = wallScene();
+    Material glowing{Vec3f{0, 0, 0}};
+    glowing.emission = Vec3f{1, 1, 1};
+    scene.materials[0] = glowing;
+    scene.sky = Sky::uniform(Vec3f{0, 0, 0});
+    const RenderSettings settings = filmSettings(32, 24, 16);
+    // Half a pixel below the wall's top, so that its edge crosses the middle of a row.
+    const Camera camera = makeLookAtCamera(Vec3f{0, kWallTop - 0.6f, kWallDistance}, Vec3f{0, kWallTop - 0.6f, 0},
+                                           40.0f, 32.0f / 24.0f);
+    const Film film = renderFilm(scene, settings, {16}, camera);
+    size_t mixed = 0;
+    for (size_t i = 0; i < film.pixels(); ++i) {
+        EXPECT_EQ(film.arrays.radianceSum[i].x, float(film.arrays.surfaceCount[i])) << "pixel " << i;
+        mixed += film.arrays.surfaceCount[i] > 0 && film.arrays.surfaceCount[i] < 16;
+    }
+    EXPECT_GE(mixed, 30u) << "the horizon's row should mix wall and sky";
 }

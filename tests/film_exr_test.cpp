@@ -2,7 +2,7 @@
 // wall seen head-on under the sky.
 #include "cpu/cpu_renderer.h"
 #include "film/film_output.h"
-#include "film_test_scene.h"
+#include "film_test_support.h"
 #include "process_scratch_dir.h"
 
 #include "film_exr_read.h"

@@ -184,7 +184,7 @@ void runBench(const BenchOptions& o) {
     GpuMemory memory;
     if (onGpu) {
         size_t extra = batches.primary.size() * (sizeof(Ray) + sizeof(SurfaceHit)) +
-                       size_t(frame.width) * frame.height * sizeof(Vec3f);
+                       Film::bytesFor(frame.width, frame.height, false);
         std::unique_ptr<GpuScene> g = GpuScene::upload(scene, extra);
         for (int k = 0; k < 3; ++k) rows[k].ms = g->timeTrace(*batch[k], k == 2, o.warmup, repeats);
         frameMs = g->timeRender(prepared.camera, frame, o.warmup, repeats);

@@ -1,7 +1,6 @@
 #include "film/exr_file.h"
 
 #include "io/atomic_file.h"
-#include "model/input_error.h"
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
@@ -12,7 +11,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <vector>
@@ -97,23 +95,17 @@ void writeExr(const Film& film, const std::string& path, const ExrOptions& optio
         channels.addUint("samples", aovs.samples);
     }
 
-    const std::string temporary = path + ".tmp";
-    std::ofstream stream(temporary, std::ios::binary);
-    if (!stream) throw InputError(path + ": cannot write: " + std::strerror(errno), FailureKind::Output);
-    std::string failure;
-    try {
-        channels.write(stream, temporary);
-    } catch (const std::exception& e) {
-        failure = firstLine(e.what());
-    }
-    stream.close();
-    if (failure.empty() && stream.fail()) failure = "the data did not reach the disk";
-    if (!failure.empty()) {
-        std::error_code ec;
-        std::filesystem::remove(temporary, ec);
-        throw InputError(path + ": failed to write EXR data: " + failure, FailureKind::Output);
-    }
-    commitTemporary(temporary, path);
+    writeThroughTemporary(path, [&](const std::string& temporary) -> std::string {
+        std::ofstream stream(temporary, std::ios::binary);
+        if (!stream) return std::string("cannot write: ") + std::strerror(errno);
+        try {
+            channels.write(stream, temporary);
+        } catch (const std::exception& e) {
+            return "failed to write EXR data: " + firstLine(e.what());
+        }
+        stream.close();
+        return stream.fail() ? "failed to write EXR data" : "";
+    });
 }
 
 size_t exrWriteBytes(uint32_t width, uint32_t height) {

@@ -32,15 +32,17 @@ size_t Film::bytesFor(uint32_t width, uint32_t height, bool withAovs) {
 }
 
 namespace {
-/// `sum` over `count`, zero for no samples. Divides as Vec3f does, so a film's mean is bit for bit
-/// the mean the renderers computed before they kept a film.
+/// `sum` over `count`, zero for no samples.
 Vec3f meanOf(Vec3f sum, uint32_t count) { return count ? sum / float(count) : Vec3f{}; }
 } // namespace
 
+Vec3f meanRadiance(const Film& film, size_t pixel) {
+    return meanOf(film.arrays.radianceSum[pixel], film.arrays.sampleCount[pixel]);
+}
+
 LinearImage meanRadiance(const Film& film) {
     LinearImage image{film.width, film.height, std::vector<Vec3f>(film.pixels())};
-    for (size_t i = 0; i < film.pixels(); ++i)
-        image.pixels[i] = meanOf(film.arrays.radianceSum[i], film.arrays.sampleCount[i]);
+    for (size_t i = 0; i < film.pixels(); ++i) image.pixels[i] = meanRadiance(film, i);
     return image;
 }
 

@@ -70,7 +70,12 @@ struct Film {
     static size_t bytesFor(uint32_t width, uint32_t height, bool withAovs);
 };
 
-/// Mean radiance per pixel: the sum over the sample count (black where none was added).
+/// Mean radiance of pixel `pixel`: its sum over its sample count (black where none was added).
+/// Divides as Vec3f does, so that a film's mean is bit for bit the mean the renderers computed
+/// before they kept a film.
+Vec3f meanRadiance(const Film& film, size_t pixel);
+
+/// Mean radiance of every pixel.
 LinearImage meanRadiance(const Film& film);
 
 /// A film's AOVs resolved per pixel (docs/film.md defines each).

@@ -25,6 +25,10 @@ FilmFormat filmFormatOf(const std::string& path);
 /// Whether the file at `path` holds AOVs (EXR), so that the render must run the AOV pass.
 bool filmOutputNeedsAovs(const std::string& path);
 
+/// The film's mean radiance at `exposureEv` (stops) through the filmic curve to 8-bit sRGB, pixel
+/// by pixel (no image of means in between).
+Rgb8Image toneMap(const Film& film, float exposureEv);
+
 /// Writes `film` to `path` in the format of its extension, through a temporary renamed into
 /// place. PNG: mean radiance at `options.exposureEv` through the filmic curve to 8-bit sRGB.
 /// EXR: writeExr. Throws InputError naming the file on failure.

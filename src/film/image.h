@@ -21,9 +21,6 @@ struct Rgb8Image {
     std::vector<uint8_t> rgb;
 };
 
-/// Tone maps a linear image with exposure `exposureEv` (stops) through the filmic curve to sRGB.
-Rgb8Image toneMap(const LinearImage& image, float exposureEv);
-
 /// Writes a PNG atomically: to `path`.tmp, then renamed. Throws InputError naming the file on failure.
 void writePng(const Rgb8Image& image, const std::string& path);
 

@@ -25,7 +25,7 @@ constexpr int kTraceBlock = 128;
 // triangles run fastest at five blocks (96 registers; 14 % slower at four). The walls' kernel is bound
 // by instruction fetches: at four blocks (128 registers) it spills nothing, 120 instructions fewer,
 // and fewer warps share the instruction cache; measured against five, +5 % at 20 m on the generated
-// city, -3 % at 80 m (docs/gpu_notes.md, ninth session).
+// city, -3 % at 80 m (measured: docs/gpu_notes.md).
 template <SceneLayout Layout> constexpr int kRenderBlocksPerSm = Layout == SceneLayout::Mixed ? 4 : 5;
 
 /// One thread per pixel: adds `samples` to the film, in sample order as on the CPU.

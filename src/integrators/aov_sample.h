@@ -5,21 +5,12 @@
 
 #include "film/film_view.h"
 #include "geometry/scene_intersect.h"
-#include "math/rng.h"
+#include "integrators/camera_sample.h"
 #include "scene/camera.h"
 #include "scene/render_settings.h"
 #include "scene/surface_part.h"
 
 namespace urbis {
-
-/// The camera ray of sample `sampleIndex` through pixel (px, py), jittered by the sample's first
-/// two random numbers: the ray tracePath starts from.
-URBIS_HD inline Ray cameraSampleRay(const Camera& camera, const RenderSettings& settings, uint32_t px, uint32_t py,
-                                    uint32_t sampleIndex) {
-    SampleStream rng{settings.seed, py * settings.width + px, sampleIndex};
-    const float jx = rng.draw(), jy = rng.draw();
-    return camera.generateRay((float(px) + jx) / float(settings.width), (float(py) + jy) / float(settings.height));
-}
 
 /// What camera ray `ray` sees first: material albedo, the normal facing the camera, world
 /// position, and depth as the distance along the camera's view axis (z depth, not the ray's t).
@@ -63,8 +54,10 @@ URBIS_HD inline uint32_t primaryHitId(const SceneView& scene, const Camera& came
 URBIS_HD inline void addAovSamples(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
                                    uint32_t px, uint32_t py, SampleRange samples, const FilmView& film) {
     const size_t pixel = film.pixel(px, py);
-    for (uint32_t s = samples.first; s < samples.first + samples.count; ++s)
-        addAovSample(film, pixel, aovOfCameraRay(scene, camera, cameraSampleRay(camera, settings, px, py, s)));
+    for (uint32_t s = samples.first; s < samples.first + samples.count; ++s) {
+        SampleStream rng = pixelSampleStream(settings, px, py, s);
+        addAovSample(film, pixel, aovOfCameraRay(scene, camera, cameraSampleRay(camera, settings, px, py, rng)));
+    }
     if (samples.first == 0 && samples.count > 0) {
         const SurfaceIds ids = pixelCentreIds(scene, camera, settings, px, py);
         film.objectId[pixel] = ids.object;

@@ -1,9 +1,15 @@
-// An analytic scene for the film's tests: a wall seen head-on, the sky above it.
+// What the film's tests share: an analytic scene (a wall seen head-on, the sky above it) and a
+// comparison of films bit for bit.
 #pragma once
 
+#include "film/film.h"
 #include "scene/camera_framing.h"
 #include "scene/scene.h"
 #include "scene/surface_part.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
 
 namespace urbis::test {
 
@@ -44,6 +50,21 @@ inline RenderSettings filmSettings(uint32_t width, uint32_t height, uint32_t spp
     s.height = height;
     s.spp = spp;
     return s;
+}
+
+/// Expects two films to hold the same bits in every array.
+inline void expectSameFilmBits(const Film& a, const Film& b) {
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    int array = 0;
+    forEachFilmArray(
+        [&](auto, bool, const auto& x, const auto& y) {
+            ++array;
+            ASSERT_EQ(x.size(), y.size()) << "array " << array;
+            EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])), 0) << "array " << array;
+        },
+        a.arrays, b.arrays);
+    EXPECT_EQ(array, 9);
 }
 
 } // namespace urbis::test
