@@ -8,6 +8,7 @@ packages=(
   libgeos-dev                                                           # footprint triangulation, validity
   libcgal-dev                                                           # straight skeletons (hipped roofs)
   libcli11-dev nlohmann-json3-dev libpng-dev libtbb-dev                 # command line, JSON, PNG, threads
+  libopenexr-dev                                                        # EXR output of the film
   libgtest-dev libbenchmark-dev libembree-dev                           # tests, benchmarks, speed reference
   python-osmnx-doc                                                      # a tiny real OSM extract for the tests
   python3                                                               # scripts/check_layers.py (ctest: layers)

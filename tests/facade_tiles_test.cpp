@@ -5,7 +5,7 @@
 #include "facade_test_walls.h"
 #include "cpu/cpu_renderer.h"
 #include "geometry/wall_intersect.h"
-#include "integrators/primary_id.h"
+#include "integrators/aov_sample.h"
 #include "layout/city_layout.h"
 #include "scene/camera_framing.h"
 #include "scene/scene.h"

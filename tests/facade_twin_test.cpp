@@ -3,7 +3,7 @@
 // on a generated city.
 #include "citygen/city_mesher.h"
 #include "cpu/cpu_renderer.h"
-#include "integrators/primary_id.h"
+#include "integrators/aov_sample.h"
 #include "layout/city_layout.h"
 #include "osm/osm_import.h"
 #include "scene/camera_framing.h"

@@ -2,6 +2,7 @@
 #include "gpu_test_support.h"
 
 #include "citygen/city_mesher.h"
+#include "cpu/cpu_renderer.h"
 #include "osm/osm_import.h"
 #include "scene/camera_framing.h"
 

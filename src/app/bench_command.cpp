@@ -5,7 +5,7 @@
 #include "app/render_device.h"
 #include "gpu/gpu_backend.h"
 #include "integrators/path_tracer.h"
-#include "film/image.h"
+#include "film/film_output.h"
 #include "io/atomic_file.h"
 #include "base/input_error.h"
 
@@ -184,7 +184,7 @@ void runBench(const BenchOptions& o) {
     GpuMemory memory;
     if (onGpu) {
         size_t extra = batches.primary.size() * (sizeof(Ray) + sizeof(SurfaceHit)) +
-                       size_t(frame.width) * frame.height * sizeof(Vec3f);
+                       Film::bytesFor(frame.width, frame.height, false);
         std::unique_ptr<GpuScene> g = GpuScene::upload(scene, extra);
         for (int k = 0; k < 3; ++k) rows[k].ms = g->timeTrace(*batch[k], k == 2, o.warmup, repeats);
         frameMs = g->timeRender(prepared.camera, frame, o.warmup, repeats);

@@ -7,6 +7,7 @@
 #include "app/render_device.h"
 #include "citygen/city_mesher.h"
 #include "cpu/cpu_renderer.h"
+#include "film/film_output.h"
 #include "io/atomic_file.h"
 #include "layout/city_layout.h"
 #include "base/input_error.h"
@@ -26,9 +27,12 @@
 namespace urbis {
 
 void addRenderCommand(CLI::App& app, RenderOptions& o) {
-    CLI::App* cmd = app.add_subcommand("render", "Path trace a city to a PNG (the generated default world without --osm)");
+    CLI::App* cmd = app.add_subcommand("render", "Path trace a city to a PNG or EXR (the generated default world without --osm)");
     cmd->add_option("--osm", o.osmFile, "OpenStreetMap file: .osm, .osm.pbf, .osm.bz2, .osm.gz");
-    cmd->add_option("--out", o.outFile, "Image to write; the format follows the extension: .png")->capture_default_str();
+    cmd->add_option("--out", o.outFile, "Image to write; the format follows the extension: .png (tone-mapped sRGB) or "
+                                        ".exr (linear RGBA with albedo, normal, depth, position, id and sample layers)")
+        ->capture_default_str();
+    cmd->add_flag("--exr-float", o.exrFloat, "EXR colour, albedo and normal as 32-bit float (default half)");
     cmd->add_option("--width", o.settings.width, "Image width in pixels")->check(CLI::Range(1u, kMaxImageSide))->capture_default_str();
     cmd->add_option("--height", o.settings.height, "Image height in pixels")->check(CLI::Range(1u, kMaxImageSide))->capture_default_str();
     cmd->add_option("--spp", o.settings.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20))->capture_default_str();
@@ -259,22 +263,23 @@ void runRender(const RenderOptions& o) {
     const auto start = Clock::now();
     size_t threads = o.threads ? o.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
-    // EXR joins .png here once the film writes it.
-    checkOutputPath("--out", o.outFile, {".png"});
+    checkOutputPath("--out", o.outFile, {".png", ".exr"});
     checkOutputPath("--stats", o.statsFile, {".json"});
     checkDistinctOutputs("--out", o.outFile, "--stats", o.statsFile);
     const size_t limit = memoryLimit(o.maxMemory);
-    requireMemory(hostFilmBytes(o.settings.width, o.settings.height), limit,
+    const bool aovs = filmOutputNeedsAovs(o.outFile);
+    requireMemory(hostFilmBytes(o.settings.width, o.settings.height, aovs), limit,
                   "the " + std::to_string(o.settings.width) + "x" + std::to_string(o.settings.height) + " image");
 
     PreparedScene prepared = prepareScene(o, limit);
     RenderCounters counters;
     DeviceReport device;
-    LinearImage image =
-        renderOnDevice(prepared.scene, prepared.camera, o.settings, o.device, isatty(2), o.verbose, counters, device);
+    Film film(o.settings.width, o.settings.height, aovs);
+    renderOnDevice(prepared.scene, prepared.camera, o.settings, film.nextSamples(o.settings.spp), film, o.device,
+                   isatty(2), o.verbose, counters, device);
 
     auto t0 = Clock::now();
-    writePng(toneMap(image, o.exposureEv), o.outFile);
+    writeFilm(film, o.outFile, FilmOutputOptions{o.exposureEv, o.exrFloat});
     double secondsWrite = secondsSince(t0);
 
     if (!o.statsFile.empty()) writeStats(o, prepared, counters, device, threads, secondsWrite);

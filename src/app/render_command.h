@@ -1,4 +1,4 @@
-// `urbis render`: load or generate a city, mesh it, build the BVH, path trace, write PNG and stats.
+// `urbis render`: load or generate a city, mesh it, build the BVH, path trace, write PNG or EXR and stats.
 #pragma once
 
 #include "citygen/city_mesher.h"
@@ -28,6 +28,7 @@ struct RenderOptions {
     std::string sun = "40,150";       ///< "elevation,azimuth" degrees
     float sunRadiusDeg = 0.27f;
     float exposureEv = -0.6f;
+    bool exrFloat = false;            ///< --exr-float: EXR colour, albedo and normal as float, not half
     float metresPerLevel = 3.0f;
     std::string device = "auto";      ///< "auto", "cpu" or "cuda"
     std::string geometry = "procedural";  ///< --geometry: representation per kind (see parseGeometryModes)

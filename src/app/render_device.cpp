@@ -18,21 +18,23 @@ std::string cpuModelName() {
     return "cpu";
 }
 
-LinearImage renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                           const std::string& device, bool showProgress, bool verbose, RenderCounters& counters,
-                           DeviceReport& report) {
+void renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                    Film& film, const std::string& device, bool showProgress, bool verbose, RenderCounters& counters,
+                    DeviceReport& report) {
     const bool sayDevice = verbose || device == "cuda";
     if (device != "cpu") {
         GpuInfo info = probeGpu();
         if (!info.available && device == "cuda") throw InputError("--device cuda: " + info.reason, FailureKind::Device);
         if (info.available) {
             try {
-                size_t filmBytes = size_t(settings.width) * settings.height * sizeof(Vec3f);
-                std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene, filmBytes);
+                std::unique_ptr<GpuScene> gpu =
+                    GpuScene::upload(scene, Film::bytesFor(film.width, film.height, film.hasAovs()));
                 if (sayDevice) std::fprintf(stderr, "urbis: rendering on %s (cuda)\n", info.name.c_str());
-                LinearImage image = gpu->render(camera, settings, counters);
+                gpu->setFilm(film);
+                gpu->render(camera, settings, samples, counters);
+                gpu->readFilm(film);
                 report = DeviceReport{"cuda", info.name, gpu->memory()};
-                return image;
+                return;
             } catch (const InputError& e) {
                 if (device == "cuda") throw;
                 std::fprintf(stderr, "urbis: %s; falling back to the CPU\n", e.what());
@@ -42,7 +44,7 @@ LinearImage renderOnDevice(const Scene& scene, const Camera& camera, const Rende
         }
     }
     report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}};
-    return renderCpu(scene.view(), camera, settings, showProgress, counters);
+    renderCpu(scene.view(), camera, settings, samples, film, showProgress, counters);
 }
 
 } // namespace urbis

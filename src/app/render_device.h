@@ -18,12 +18,12 @@ struct DeviceReport {
 /// The CPU's model name from /proc/cpuinfo, or "cpu" where unknown.
 std::string cpuModelName();
 
-/// Renders on `device`: "cuda" (fails with InputError if the GPU cannot), "cpu", or "auto" (the
-/// GPU when one is usable, else the CPU, with a stated fallback to the CPU if the GPU fails).
-/// Which device renders is said on stderr when `verbose` or when "cuda" was asked for.
-/// `showProgress` draws the CPU progress bar.
-LinearImage renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettings& settings,
-                           const std::string& device, bool showProgress, bool verbose, RenderCounters& counters,
-                           DeviceReport& report);
+/// Adds `samples` of every pixel to `film` on `device`: "cuda" (fails with InputError if the GPU
+/// cannot), "cpu", or "auto" (the GPU when one is usable, else the CPU, with a stated fallback to
+/// the CPU if the GPU fails, `film` then as it was). Which device renders is said on stderr when
+/// `verbose` or when "cuda" was asked for. `showProgress` draws the CPU progress bar.
+void renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                    Film& film, const std::string& device, bool showProgress, bool verbose, RenderCounters& counters,
+                    DeviceReport& report);
 
 } // namespace urbis

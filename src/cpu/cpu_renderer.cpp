@@ -1,7 +1,7 @@
 #include "cpu/cpu_renderer.h"
 
-#include "integrators/path_tracer.h"
-#include "integrators/primary_id.h"
+#include "integrators/aov_sample.h"
+#include "integrators/path_samples.h"
 
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <mutex>
+#include <stdexcept>
 
 namespace urbis {
 
@@ -41,11 +42,13 @@ private:
 
 } // namespace
 
-LinearImage renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
-                      bool showProgress, RenderCounters& counters) {
-    LinearImage image{settings.width, settings.height, std::vector<Vec3f>(size_t(settings.width) * settings.height)};
+void renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+               Film& film, bool showProgress, RenderCounters& counters) {
+    if (film.width != settings.width || film.height != settings.height)
+        throw std::invalid_argument("renderCpu: the film's size is not the settings' image size");
+    const FilmView view = film.view();
     std::atomic<uint64_t> rays{0};
-    ProgressBar progress(showProgress, image.pixels.size());
+    ProgressBar progress(showProgress, film.pixels());
     auto start = std::chrono::steady_clock::now();
     constexpr size_t kTile = 16;
     tbb::parallel_for(
@@ -54,13 +57,8 @@ LinearImage renderCpu(const SceneView& scene, const Camera& camera, const Render
             uint64_t tileRays = 0;
             for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
                 for (uint32_t x = tile.cols().begin(); x < tile.cols().end(); ++x) {
-                    Vec3f sum{};
-                    for (uint32_t s = 0; s < settings.spp; ++s) {
-                        PathSample sample = tracePath(scene, camera, settings, x, y, s);
-                        sum += sample.radiance;
-                        tileRays += sample.rays;
-                    }
-                    image.pixels[size_t(y) * settings.width + x] = sum / float(settings.spp);
+                    tileRays += addPathSamples(scene, camera, settings, x, y, samples, view);
+                    if (view.hasAovs()) addAovSamples(scene, camera, settings, x, y, samples, view);
                 }
             rays += tileRays;
             progress.advance(tile.rows().size() * tile.cols().size());
@@ -68,7 +66,13 @@ LinearImage renderCpu(const SceneView& scene, const Camera& camera, const Render
         tbb::simple_partitioner());
     counters.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     counters.rays = rays;
-    return image;
+}
+
+LinearImage renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
+                      bool showProgress, RenderCounters& counters) {
+    Film film(settings.width, settings.height, false);
+    renderCpu(scene, camera, settings, SampleRange{0, settings.spp}, film, showProgress, counters);
+    return meanRadiance(film);
 }
 
 std::vector<uint32_t> renderIdsCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings) {

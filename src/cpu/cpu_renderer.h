@@ -1,23 +1,25 @@
-// The CPU backend: 16x16 tiles over TBB's thread pool, each pixel's samples summed in order,
-// so the image is the same for any thread count.
+// The CPU backend: 16x16 tiles over TBB's thread pool adding to a film, each pixel's samples in
+// order, so the film is the same for any thread count.
 #pragma once
 
-#include "film/image.h"
+#include "film/film.h"
+#include "integrators/render_counters.h"
 #include "scene/camera.h"
 #include "scene/render_settings.h"
 #include "scene/scene_view.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace urbis {
 
-struct RenderCounters {
-    uint64_t rays = 0;
-    double seconds = 0;
-};
+/// Adds samples `samples` of every pixel to `film` (settings.width x settings.height): the path
+/// tracer's radiance, and the AOV pass's when the film keeps AOVs. With `showProgress`, draws a
+/// progress bar on stderr.
+void renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+               Film& film, bool showProgress, RenderCounters& counters);
 
-/// Path traces every pixel with settings.spp samples; the mean radiance per pixel.
-/// With `showProgress`, draws a progress bar on stderr.
+/// The mean radiance of a fresh film of settings.spp samples per pixel.
 LinearImage renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
                       bool showProgress, RenderCounters& counters);
 

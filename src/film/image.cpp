@@ -1,25 +1,14 @@
 #include "film/image.h"
 
-#include "film/tone_map.h"
 #include "io/atomic_file.h"
 #include "base/input_error.h"
 
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <png.h>
 
 namespace urbis {
-
-Rgb8Image toneMap(const LinearImage& image, float exposureEv) {
-    Rgb8Image out{image.width, image.height, std::vector<uint8_t>(size_t(image.width) * image.height * 3)};
-    float scale = std::exp2(exposureEv);
-    for (size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) out.rgb[3 * i + c] = toneMapChannel(image.pixels[i][c], scale);
-    return out;
-}
 
 namespace {
 
@@ -50,17 +39,13 @@ bool encodePng(const Rgb8Image& image, FILE* file) {
 } // namespace
 
 void writePng(const Rgb8Image& image, const std::string& path) {
-    std::string temporary = path + ".tmp";
-    FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) throw InputError(path + ": cannot write: " + std::strerror(errno), FailureKind::Output);
-    bool encoded = encodePng(image, file);
-    bool closed = std::fclose(file) == 0;
-    std::error_code ec;
-    if (!encoded || !closed) {
-        std::filesystem::remove(temporary, ec);
-        throw InputError(path + ": failed to write PNG data", FailureKind::Output);
-    }
-    commitTemporary(temporary, path);
+    writeThroughTemporary(path, [&](const std::string& temporary) -> std::string {
+        FILE* file = std::fopen(temporary.c_str(), "wb");
+        if (!file) return std::string("cannot write: ") + std::strerror(errno);
+        const bool encoded = encodePng(image, file);
+        const bool closed = std::fclose(file) == 0;
+        return encoded && closed ? "" : "failed to write PNG data";
+    });
 }
 
 } // namespace urbis

@@ -1,14 +1,17 @@
 // The CUDA backend: device memory and kernel launches only. Every kernel calls the shared
-// URBIS_HD per-ray code (tracePath, intersectClosest, occluded), the same as the CPU backend.
+// URBIS_HD per-ray code (addPathSamples, addAovSamples, intersectScene, occludedScene), the same as the
+// CPU backend.
 #include "gpu/gpu_backend.h"
 
 #include "gpu/cuda_check.h"
 #include "gpu/device_buffer.h"
 #include "gpu/device_scene.h"
-#include "integrators/path_tracer.h"
+#include "integrators/aov_sample.h"
+#include "integrators/path_samples.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 namespace urbis {
 
@@ -22,30 +25,32 @@ constexpr int kTraceBlock = 128;
 // triangles run fastest at five blocks (96 registers; 14 % slower at four). The walls' kernel is bound
 // by instruction fetches: at four blocks (128 registers) it spills nothing, 120 instructions fewer,
 // and fewer warps share the instruction cache; measured against five, +5 % at 20 m on the generated
-// city, -3 % at 80 m (docs/gpu_notes.md, ninth session).
+// city, -3 % at 80 m (measured: docs/gpu_notes.md).
 template <SceneLayout Layout> constexpr int kRenderBlocksPerSm = Layout == SceneLayout::Mixed ? 4 : 5;
 
-/// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU.
+/// One thread per pixel: adds `samples` to the film, in sample order as on the CPU.
 /// One kernel per scene layout, so that each holds only the traversal it runs.
 template <SceneLayout Layout>
 __global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<Layout>)
-    renderKernel(SceneView scene, Camera camera, RenderSettings settings, Vec3f* film, unsigned long long* rayCount) {
+    renderKernel(SceneView scene, Camera camera, RenderSettings settings, SampleRange samples, FilmView film,
+                 unsigned long long* rayCount) {
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     uint32_t rays = 0;
-    if (x < settings.width && y < settings.height) {
-        Vec3f sum{};
-        for (uint32_t s = 0; s < settings.spp; ++s) {
-            PathSample sample = tracePath<Layout>(scene, camera, settings, x, y, s);
-            sum += sample.radiance;
-            rays += sample.rays;
-        }
-        film[size_t(y) * settings.width + x] = sum / float(settings.spp);
-    }
+    if (x < settings.width && y < settings.height)
+        rays = addPathSamples<Layout>(scene, camera, settings, x, y, samples, film);
     // One atomic per warp.
     unsigned long long total = rays;
     for (int offset = 16; offset > 0; offset /= 2) total += __shfl_down_sync(0xffffffffu, total, offset);
     if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && total > 0) atomicAdd(rayCount, total);
+}
+
+/// One thread per pixel: the AOV pass of `samples`, apart from the path tracer's kernel.
+__global__ void __launch_bounds__(kTileX * kTileY) aovKernel(SceneView scene, Camera camera, RenderSettings settings,
+                                                             SampleRange samples, FilmView film) {
+    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+    if (x < settings.width && y < settings.height) addAovSamples(scene, camera, settings, x, y, samples, film);
 }
 
 __global__ void __launch_bounds__(kTraceBlock) closestKernel(SceneView scene, const Ray* rays, SurfaceHit* hits,
@@ -142,23 +147,43 @@ GpuInfo probeGpu() {
 struct GpuScene::Impl {
     GpuInfo info;
     DeviceScene scene;
-    DeviceBuffer<Vec3f> film;
+    FilmArrays<DeviceBuffer> film;
+    uint32_t filmWidth = 0, filmHeight = 0;
     DeviceBuffer<Ray> rays;
     DeviceBuffer<SurfaceHit> hits;
     DeviceBuffer<uint8_t> blocked;
     DeviceBuffer<unsigned long long> rayCount{1};
 
-    /// Launches the path tracer into `film`; returns after the launch (not the run).
-    void launchRender(const Camera& camera, const RenderSettings& settings) {
-        film.resize(size_t(settings.width) * settings.height);
+    /// The device film's arrays as per-ray code sees them.
+    FilmView filmView() {
+        FilmView view{filmWidth, filmHeight};
+        forEachFilmArray([&](auto member, bool, auto& buffer) { view.*member = buffer.size() ? buffer.data() : nullptr; },
+                         film);
+        return view;
+    }
+    size_t filmBytes() const {
+        size_t bytes = 0;
+        forEachFilmArray([&](auto, bool, const auto& buffer) { bytes += buffer.bytes(); }, film);
+        return bytes;
+    }
+
+    /// Launches the path tracer, then the AOV pass where the film keeps AOVs, adding `samples` to
+    /// the device film; returns after the launches (not the run).
+    void launchRender(const Camera& camera, const RenderSettings& settings, SampleRange samples) {
+        if (filmWidth != settings.width || filmHeight != settings.height)
+            throw std::invalid_argument("GpuScene::render: the film's size is not the settings' image size");
         dim3 block(kTileX, kTileY);
         dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
         const SceneView view = scene.view();
+        const FilmView target = filmView();
         if (view.primRefs)
-            renderKernel<SceneLayout::Mixed><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
+            renderKernel<SceneLayout::Mixed><<<grid, block>>>(view, camera, settings, samples, target, rayCount.data());
         else
-            renderKernel<SceneLayout::Triangles><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
+            renderKernel<SceneLayout::Triangles><<<grid, block>>>(view, camera, settings, samples, target, rayCount.data());
         checkLaunch("renderKernel");
+        if (!target.hasAovs()) return;
+        aovKernel<<<grid, block>>>(view, camera, settings, samples, target);
+        checkLaunch("aovKernel");
     }
 
     /// Launches closest-hit or any-hit tracing of the rays already in `rays`.
@@ -198,20 +223,40 @@ std::unique_ptr<GpuScene> GpuScene::upload(const Scene& scene, size_t extraBytes
     return std::unique_ptr<GpuScene>(new GpuScene(std::move(impl)));
 }
 
-LinearImage GpuScene::render(const Camera& camera, const RenderSettings& settings, RenderCounters& counters) {
+void GpuScene::setFilm(const Film& host) {
     Impl& m = *impl_;
-    m.requireFree(size_t(settings.width) * settings.height * sizeof(Vec3f) > m.film.bytes()
-                      ? size_t(settings.width) * settings.height * sizeof(Vec3f) - m.film.bytes() : 0,
-                  "the film");
+    const size_t needed = Film::bytesFor(host.width, host.height, host.hasAovs());
+    m.requireFree(needed > m.filmBytes() ? needed - m.filmBytes() : 0, "the film");
+    forEachFilmArray([](auto, bool, auto& device, const auto& array) { device.upload(array); }, m.film, host.arrays);
+    m.filmWidth = host.width;
+    m.filmHeight = host.height;
+}
+
+void GpuScene::render(const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                      RenderCounters& counters) {
+    Impl& m = *impl_;
     URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
-    m.film.resize(size_t(settings.width) * settings.height);
     EventTimer timer;
     timer.start();
-    m.launchRender(camera, settings);
+    m.launchRender(camera, settings, samples);
     counters.seconds = timer.stopMs() * 1e-3;
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());
     counters.rays = m.rayCount.download()[0];
-    return LinearImage{settings.width, settings.height, m.film.download()};
+}
+
+void GpuScene::readFilm(Film& host) const {
+    const Impl& m = *impl_;
+    host.width = m.filmWidth;
+    host.height = m.filmHeight;
+    forEachFilmArray([](auto, bool, const auto& device, auto& array) { array = device.download(); }, m.film, host.arrays);
+}
+
+LinearImage GpuScene::render(const Camera& camera, const RenderSettings& settings, RenderCounters& counters) {
+    Film film(settings.width, settings.height, false);
+    setFilm(film);
+    render(camera, settings, SampleRange{0, settings.spp}, counters);
+    readFilm(film);
+    return meanRadiance(film);
 }
 
 std::vector<SurfaceHit> GpuScene::intersect(const std::vector<Ray>& rays) {
@@ -246,13 +291,15 @@ std::vector<float> GpuScene::timeTrace(const std::vector<Ray>& rays, bool shadow
 
 std::vector<float> GpuScene::timeRender(const Camera& camera, const RenderSettings& settings, int warmup, int repeats) {
     Impl& m = *impl_;
-    for (int i = 0; i < warmup; ++i) m.launchRender(camera, settings);
+    setFilm(Film(settings.width, settings.height, false));
+    const SampleRange samples{0, settings.spp};
+    for (int i = 0; i < warmup; ++i) m.launchRender(camera, settings, samples);
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());
     std::vector<float> ms;
     EventTimer timer;
     for (int i = 0; i < repeats; ++i) {
         timer.start();
-        m.launchRender(camera, settings);
+        m.launchRender(camera, settings, samples);
         ms.push_back(timer.stopMs());
     }
     return ms;
@@ -267,7 +314,7 @@ GpuMemory GpuScene::memory() const {
     out.primRefs = m.scene.primRefs.bytes();
     out.walls = m.scene.walls.bytes();
     out.materials = m.scene.materials.bytes();
-    out.film = m.film.bytes();
+    out.film = m.filmBytes();
     out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes();
     return out;
 }

@@ -3,8 +3,8 @@
 // Per-ray code is not here: the kernels call the same URBIS_HD headers as the CPU backend.
 #pragma once
 
-#include "cpu/cpu_renderer.h"
-#include "film/image.h"
+#include "film/film.h"
+#include "integrators/render_counters.h"
 #include "math/ray.h"
 #include "scene/camera.h"
 #include "scene/render_settings.h"
@@ -49,8 +49,16 @@ public:
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;
 
-    /// Path traces like renderCpu: per pixel the mean of settings.spp tracePath samples, summed
-    /// in sample order; counters.seconds is the kernel's time (CUDA events).
+    /// Makes the device film a copy of `film` (its size, AOVs and sums): render calls add to it,
+    /// and it stays on the device between them.
+    void setFilm(const Film& film);
+    /// Adds samples `samples` of every pixel to the device film, like renderCpu: the path
+    /// tracer's kernel, then the AOV pass's when the film keeps AOVs. The film must be
+    /// settings.width x settings.height. counters.seconds is the kernels' time (CUDA events).
+    void render(const Camera& camera, const RenderSettings& settings, SampleRange samples, RenderCounters& counters);
+    /// Copies the device film into `film`.
+    void readFilm(Film& film) const;
+    /// The mean radiance of a fresh device film of settings.spp samples per pixel, like renderCpu's.
     LinearImage render(const Camera& camera, const RenderSettings& settings, RenderCounters& counters);
 
     /// The closest surface (intersectScene: every primitive kind and the ground) of every ray.

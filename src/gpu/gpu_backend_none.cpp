@@ -24,6 +24,9 @@ struct GpuScene::Impl {
 GpuScene::GpuScene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 GpuScene::~GpuScene() = default;
 std::unique_ptr<GpuScene> GpuScene::upload(const Scene&, size_t) { noCuda(); }
+void GpuScene::setFilm(const Film&) { noCuda(); }
+void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, RenderCounters&) { noCuda(); }
+void GpuScene::readFilm(Film&) const { noCuda(); }
 LinearImage GpuScene::render(const Camera&, const RenderSettings&, RenderCounters&) { noCuda(); }
 std::vector<SurfaceHit> GpuScene::intersect(const std::vector<Ray>&) { noCuda(); }
 std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>&) { noCuda(); }

@@ -18,19 +18,24 @@ void commitTemporary(const std::string& temporary, const std::string& path) {
     }
 }
 
-void writeTextFileAtomically(const std::string& path, const std::string& text) {
-    std::string temporary = path + ".tmp";
-    {
-        std::ofstream file(temporary, std::ios::binary);
-        if (!file) throw InputError(path + ": cannot write: " + std::strerror(errno), FailureKind::Output);
-        file << text;
-        if (!file.flush()) {
-            std::error_code ec;
-            std::filesystem::remove(temporary, ec);
-            throw InputError(path + ": failed to write", FailureKind::Output);
-        }
+void writeThroughTemporary(const std::string& path, const std::function<std::string(const std::string&)>& write) {
+    const std::string temporary = path + ".tmp";
+    const std::string failure = write(temporary);
+    if (!failure.empty()) {
+        std::error_code ec;
+        std::filesystem::remove(temporary, ec);
+        throw InputError(path + ": " + failure, FailureKind::Output);
     }
     commitTemporary(temporary, path);
+}
+
+void writeTextFileAtomically(const std::string& path, const std::string& text) {
+    writeThroughTemporary(path, [&](const std::string& temporary) -> std::string {
+        std::ofstream file(temporary, std::ios::binary);
+        if (!file) return std::string("cannot write: ") + std::strerror(errno);
+        file << text;
+        return file.flush() ? "" : "failed to write";
+    });
 }
 
 } // namespace urbis

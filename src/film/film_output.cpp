@@ -1,0 +1,49 @@
+#include "film/film_output.h"
+
+#include "film/exr_file.h"
+#include "film/tone_map.h"
+#include "base/input_error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+namespace urbis {
+
+FilmFormat filmFormatOf(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".png") return FilmFormat::Png;
+    if (extension == ".exr") return FilmFormat::Exr;
+    throw InputError(path + ": cannot write '" + extension + "' images (the format follows the extension: .png, .exr)",
+                     FailureKind::Usage);
+}
+
+bool filmOutputNeedsAovs(const std::string& path) { return filmFormatOf(path) == FilmFormat::Exr; }
+
+Rgb8Image toneMap(const Film& film, float exposureEv) {
+    Rgb8Image out{film.width, film.height, std::vector<uint8_t>(film.pixels() * 3)};
+    const float scale = std::exp2(exposureEv);
+    for (size_t i = 0; i < film.pixels(); ++i) {
+        const Vec3f mean = meanRadiance(film, i);
+        for (int c = 0; c < 3; ++c) out.rgb[3 * i + c] = toneMapChannel(mean[c], scale);
+    }
+    return out;
+}
+
+void writeFilm(const Film& film, const std::string& path, const FilmOutputOptions& options) {
+    switch (filmFormatOf(path)) {
+    case FilmFormat::Png: return writePng(toneMap(film, options.exposureEv), path);
+    case FilmFormat::Exr: return writeExr(film, path, ExrOptions{std::exp2(options.exposureEv), options.exrFloat});
+    }
+}
+
+size_t hostFilmBytes(uint32_t width, uint32_t height, bool withAovs) {
+    // PNG: the 8-bit image and libpng's row (its own state is a few KiB).
+    const size_t png = size_t(width) * height * 3 + size_t(width) * 3;
+    return Film::bytesFor(width, height, withAovs) + std::max(png, withAovs ? exrWriteBytes(width, height) : size_t(0));
+}
+
+} // namespace urbis
