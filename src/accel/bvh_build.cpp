@@ -420,6 +420,36 @@ Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& opt
     return bvh;
 }
 
+void attachLeafAtRoot(Bvh& bvh, uint32_t prim, const Bounds3f& bounds) {
+    int lane = -1;
+    for (int l = 0; l < kBvhWidth && lane < 0; ++l)
+        if (bvh.nodes[0].primCount[l] == 0 && bvh.nodes[0].box(l).empty()) lane = l;
+    if (lane < 0) {
+        // A new root above the old one, which moves every node up by one.
+        Bounds3f old;
+        for (int l = 0; l < kBvhWidth; ++l) old.extend(bvh.nodes[0].box(l));
+        for (BvhNode& node : bvh.nodes)
+            for (int l = 0; l < kBvhWidth; ++l)
+                if (node.primCount[l] == 0 && !node.box(l).empty()) ++node.child[l];
+        BvhNode root = emptyWideNode();
+        for (int axis = 0; axis < 3; ++axis) {
+            root.bounds[axis][0] = old.lo[axis];
+            root.bounds[axis + 3][0] = old.hi[axis];
+        }
+        root.child[0] = 1;
+        bvh.nodes.insert(bvh.nodes.begin(), root);
+        lane = 1;
+    }
+    BvhNode& root = bvh.nodes[0];
+    for (int axis = 0; axis < 3; ++axis) {
+        root.bounds[axis][lane] = bounds.lo[axis];
+        root.bounds[axis + 3][lane] = bounds.hi[axis];
+    }
+    root.child[lane] = uint32_t(bvh.primOrder.size());
+    root.primCount[lane] = 1;
+    bvh.primOrder.push_back(prim);
+}
+
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
     Bounds3f root;
     for (int l = 0; l < kBvhWidth; ++l) root.extend(bvh.nodes[0].box(l));

@@ -38,6 +38,12 @@ struct Bvh {
 Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options = {},
              const std::vector<uint32_t>& primCosts = {});
 
+/// Adds primitive `prim` (of world bounds `bounds`) as a leaf of its own in the root node, in a free
+/// lane or else under a new root above the old one, at leaf slot primOrder.size(). For a primitive
+/// far larger than the rest (the ground): built into the tree, its box would widen every node above
+/// its leaf, which every ray would then visit.
+void attachLeafAtRoot(Bvh& bvh, uint32_t prim, const Bounds3f& bounds);
+
 /// The SAH cost of a built BVH: traversalCost per node visited and intersectionCost per
 /// primitive tested, each weighted by its box's area relative to the root's.
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options = {});

@@ -17,18 +17,18 @@ namespace {
 constexpr int kTileX = 8, kTileY = 16;   // 128 threads; each warp covers 8 x 4 pixels
 constexpr int kTraceBlock = 128;
 
-// Blocks per SM that a render kernel's registers must allow. Left free, ptxas took 158 registers for the
-// inlined wall part tests: three blocks per SM, and frames of stored triangles 25 % slower. Stored
-// triangles run fastest at five blocks (96 registers; 14 % slower at four). The walls' kernel is bound
-// by instruction fetches: at four blocks (128 registers) it spills nothing, 120 instructions fewer,
-// and fewer warps share the instruction cache; measured against five, +5 % at 20 m on the generated
-// city, -3 % at 80 m (docs/gpu_notes.md, ninth session).
-template <SceneLayout Layout> constexpr int kRenderBlocksPerSm = Layout == SceneLayout::Mixed ? 4 : 5;
+// Blocks per SM that the render kernel's registers must allow. Left free, ptxas took 158 registers for
+// the inlined wall part tests: three blocks per SM, and frames of stored triangles 25 % slower. With
+// walls (costly kinds) four blocks (128 registers): the wall code spills nothing and fewer warps share
+// the instruction cache. Without, five (102 registers): stored triangles ran 14 % slower at four; the
+// wall code, which then never runs, may spill.
+constexpr int kRenderBlocksCostly = 4, kRenderBlocksCheap = 5;
 
-/// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU.
-/// One kernel per scene layout, so that each holds only the traversal it runs.
-template <SceneLayout Layout>
-__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<Layout>)
+/// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU. One
+/// kernel for every scene, the leaf dispatch testing whichever kinds it holds; compiled for two
+/// register budgets, which only the launch picks.
+template <int BlocksPerSm>
+__global__ void __launch_bounds__(kTileX * kTileY, BlocksPerSm)
     renderKernel(SceneView scene, Camera camera, RenderSettings settings, Vec3f* film, unsigned long long* rayCount) {
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
@@ -36,7 +36,7 @@ __global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<Layout>)
     if (x < settings.width && y < settings.height) {
         Vec3f sum{};
         for (uint32_t s = 0; s < settings.spp; ++s) {
-            PathSample sample = tracePath<Layout>(scene, camera, settings, x, y, s);
+            PathSample sample = tracePath(scene, camera, settings, x, y, s);
             sum += sample.radiance;
             rays += sample.rays;
         }
@@ -126,7 +126,7 @@ GpuInfo probeGpu() {
     info.multiprocessors = prop.multiProcessorCount;
     // The fat binary holds code for URBIS_CUDA_ARCHITECTURES only: ask whether a kernel loads here.
     cudaFuncAttributes attributes{};
-    status = cudaFuncGetAttributes(&attributes, renderKernel<SceneLayout::Mixed>);
+    status = cudaFuncGetAttributes(&attributes, renderKernel<kRenderBlocksCostly>);
     if (status != cudaSuccess) {
         info.reason = "CUDA device " + info.name + " (sm_" + std::to_string(prop.major) + std::to_string(prop.minor) +
                       ") cannot run this build's kernels (" + cudaGetErrorString(status) +
@@ -154,10 +154,10 @@ struct GpuScene::Impl {
         dim3 block(kTileX, kTileY);
         dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
         const SceneView view = scene.view();
-        if (view.primRefs)
-            renderKernel<SceneLayout::Mixed><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
+        if (scene.walls.size() > 0)
+            renderKernel<kRenderBlocksCostly><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
         else
-            renderKernel<SceneLayout::Triangles><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
+            renderKernel<kRenderBlocksCheap><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
         checkLaunch("renderKernel");
     }
 
@@ -261,12 +261,7 @@ std::vector<float> GpuScene::timeRender(const Camera& camera, const RenderSettin
 GpuMemory GpuScene::memory() const {
     const Impl& m = *impl_;
     GpuMemory out;
-    out.nodes = m.scene.nodes.bytes();
-    out.triangles = m.scene.triangles.bytes();
-    out.triangleInfo = m.scene.triangleInfo.bytes();
-    out.primRefs = m.scene.primRefs.bytes();
-    out.walls = m.scene.walls.bytes();
-    out.materials = m.scene.materials.bytes();
+    out.scene = m.scene.memory();
     out.film = m.film.bytes();
     out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes();
     return out;
