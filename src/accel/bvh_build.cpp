@@ -342,7 +342,8 @@ BvhNode emptyWideNode() {
 /// Collapses the binary tree into 4-wide nodes: each wide node takes the children of a
 /// binary node and keeps opening its largest interior child until it has kBvhWidth
 /// (as in Embree's BVH4 builders). Depth first, so siblings' subtrees stay close in memory.
-std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary) {
+/// The root takes at most `rootLanes` children (lanes left free for attachLeafAtRoot).
+std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLanes) {
     std::vector<BvhNode> wide{emptyWideNode()};
     struct Pending {
         uint32_t wide, binary;
@@ -360,7 +361,7 @@ std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary) {
             lanes[count++] = top.first;
             lanes[count++] = top.first + 1;
         }
-        while (count < kBvhWidth) {
+        while (count < (p.wide == 0 ? rootLanes : kBvhWidth)) {
             int open = -1;
             for (int l = 0; l < count; ++l) {
                 const BinaryNode& n = binary[lanes[l]];
@@ -415,7 +416,7 @@ Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& opt
     }
     Builder builder(primBounds, primCosts, options, bvh);
     builder.run();
-    bvh.nodes = collapse(builder.compact());
+    bvh.nodes = collapse(builder.compact(), std::max(2, kBvhWidth - int(options.freeRootLanes)));
     if (!primCosts.empty()) markCostlyLeaves(primCosts, bvh);
     return bvh;
 }

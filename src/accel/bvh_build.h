@@ -16,6 +16,9 @@ struct BvhBuildOptions {
     float traversalCost = 1.0f;        ///< cost of visiting one interior node
     float intersectionCost = 1.0f;     ///< cost of testing one primitive
     uint32_t parallelThreshold = 8192; ///< nodes with fewer primitives are built by one task
+    /// Lanes of the root left free for attachLeafAtRoot (at most kBvhWidth - 2), so that what it
+    /// attaches costs no level more.
+    uint32_t freeRootLanes = 0;
 };
 
 /// A BVH: flat 4-wide nodes (nodes[0] is the root) and the primitive order of its leaves.

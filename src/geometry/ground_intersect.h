@@ -29,16 +29,8 @@ struct KindIntersector<GroundRecord> {
     }
     URBIS_HD static SurfaceHit surface(const SceneView&, uint32_t, const GroundRecord& g, const PrimHit& hit,
                                        const Ray& ray) {
-        SurfaceHit s;
-        s.t = hit.t;
-        s.position = pointAt(ray, hit.t);
-        s.normal = {0, 1, 0};
-        s.tangent = {1, 0, 0};
-        s.uv = {s.position.x, s.position.z};
-        s.material = g.material;
-        s.object = 0;
-        s.part = SurfacePart::Whole;
-        return s;
+        const Vec3f p = pointAt(ray, hit.t);
+        return {kNoPrimKind, hit.t, p, {0, 1, 0}, {1, 0, 0}, {p.x, p.z}, g.material, 0, SurfacePart::Whole};
     }
 };
 

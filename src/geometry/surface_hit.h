@@ -17,7 +17,9 @@ struct SurfaceHit {
     float t = 0;                   ///< distance along the ray, in units of |ray.dir|
     Vec3f position;                ///< world, metres: ray.origin + t ray.dir
     Vec3f normal;                  ///< unit geometric normal, facing against the ray
-    Vec3f tangent;                 ///< unit, perpendicular to normal: the shading frame's x
+    /// Along the surface (perpendicular to normal), not unit: frame() makes it the shading frame's x,
+    /// so that hits no shading frame is asked of cost no square root.
+    Vec3f tangent;
     /// In the kind's own parameterisation: a triangle's barycentrics of p1 and p2, a wall's (u, v)
     /// in metres along it and up from its bottom, the ground's world (x, z).
     Vec2f uv;
@@ -26,8 +28,11 @@ struct SurfaceHit {
     SurfacePart part = SurfacePart::Whole;
 
     URBIS_HD bool valid() const { return kind != kNoPrimKind; }
-    /// The shading frame: z the normal, x the tangent.
-    URBIS_HD Frame frame() const { return {tangent, cross(normal, tangent), normal}; }
+    /// The shading frame: z the normal, x the unit tangent.
+    URBIS_HD Frame frame() const {
+        const Vec3f x = normalize(tangent);
+        return {x, cross(normal, x), normal};
+    }
 };
 
 /// What a trace works out once per ray for every kind's intersector.

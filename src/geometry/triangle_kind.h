@@ -20,17 +20,9 @@ struct KindIntersector<Triangle> {
     URBIS_HD static SurfaceHit surface(const SceneView& scene, uint32_t index, const Triangle& tri, const PrimHit& hit,
                                        const Ray& ray) {
         const TriangleInfo info = scene.triangleInfo[index];
-        SurfaceHit s;
-        s.t = hit.t;
-        s.position = pointAt(ray, hit.t);
         const Vec3f edge = tri.p1 - tri.p0;
-        s.normal = normalize(cross(edge, tri.p2 - tri.p0));
-        s.tangent = normalize(edge);
-        s.uv = {hit.u, hit.v};
-        s.material = info.material;
-        s.object = info.object;
-        s.part = SurfacePart(info.part);
-        return s;
+        return {kNoPrimKind, hit.t, pointAt(ray, hit.t), normalize(cross(edge, tri.p2 - tri.p0)), edge, {hit.u, hit.v},
+                info.material, info.object, SurfacePart(info.part)};
     }
 };
 

@@ -20,17 +20,9 @@ struct KindIntersector<WallRecord> {
     }
     URBIS_HD static SurfaceHit surface(const SceneView&, uint32_t, const WallRecord& wall, const PrimHit& hit,
                                        const Ray& ray) {
-        SurfaceHit s;
-        s.t = hit.t;
-        s.position = pointAt(ray, hit.t);
-        s.normal = wallAxisNormal(wall, hit.axis);
-        s.tangent = hit.axis == 0 ? wall.normal : wall.axisU;
-        const Vec3f rel = s.position - wall.origin;
-        s.uv = {dot(rel, wall.axisU), rel.y};
-        s.material = hit.material;
-        s.object = wall.object;
-        s.part = hit.part;
-        return s;
+        const Vec3f p = pointAt(ray, hit.t), rel = p - wall.origin;
+        return {kNoPrimKind, hit.t, p, wallAxisNormal(wall, hit.axis), hit.axis == 0 ? wall.normal : wall.axisU,
+                {dot(rel, wall.axisU), rel.y}, hit.material, wall.object, hit.part};
     }
 };
 

@@ -17,19 +17,21 @@ namespace {
 constexpr int kTileX = 8, kTileY = 16;   // 128 threads; each warp covers 8 x 4 pixels
 constexpr int kTraceBlock = 128;
 
-// Blocks per SM that the render kernel's registers must allow. Left free, ptxas took 158 registers for
-// the inlined wall part tests: three blocks per SM, and frames of stored triangles 25 % slower. With
-// walls (costly kinds) four blocks (128 registers): the wall code spills nothing and fewer warps share
-// the instruction cache. Without, five (102 registers): stored triangles ran 14 % slower at four; the
-// wall code, which then never runs, may spill.
-constexpr int kRenderBlocksCostly = 4, kRenderBlocksCheap = 5;
+// Each kernel is compiled twice, for scenes with costly leaves (walls) and without: the kernel fixes
+// SceneView::costlyLeaves, so the traversal it does not take is left out (traceScene), and each gets
+// its register budget. Not one per kind: the kinds share both (the leaf dispatch tests whichever a
+// scene holds). Blocks per SM that the render kernel's registers must allow: left free, ptxas took 158
+// registers for the inlined wall part tests, three blocks per SM. With costly leaves four (128
+// registers): the wall code spills least and fewer warps share the instruction cache. Without, five
+// (102 registers): stored triangles ran 14 % slower at four.
+template <bool CostlyLeaves>
+constexpr int kRenderBlocksPerSm = CostlyLeaves ? 4 : 5;
 
-/// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU. One
-/// kernel for every scene, the leaf dispatch testing whichever kinds it holds; compiled for two
-/// register budgets, which only the launch picks.
-template <int BlocksPerSm>
-__global__ void __launch_bounds__(kTileX * kTileY, BlocksPerSm)
+/// One thread per pixel: the mean of settings.spp samples, summed in sample order as on the CPU.
+template <bool CostlyLeaves>
+__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<CostlyLeaves>)
     renderKernel(SceneView scene, Camera camera, RenderSettings settings, Vec3f* film, unsigned long long* rayCount) {
+    scene.costlyLeaves = CostlyLeaves;   // a constant from here on
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     uint32_t rays = 0;
@@ -48,14 +50,18 @@ __global__ void __launch_bounds__(kTileX * kTileY, BlocksPerSm)
     if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && total > 0) atomicAdd(rayCount, total);
 }
 
+template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kTraceBlock) closestKernel(SceneView scene, const Ray* rays, SurfaceHit* hits,
                                                             uint32_t count) {
+    scene.costlyLeaves = CostlyLeaves;
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < count) hits[i] = intersectScene(scene, rays[i]);
 }
 
+template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kTraceBlock) occludedKernel(SceneView scene, const Ray* rays, uint8_t* blocked,
                                                              uint32_t count) {
+    scene.costlyLeaves = CostlyLeaves;
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < count) blocked[i] = occludedScene(scene, rays[i]) ? 1 : 0;
 }
@@ -126,7 +132,7 @@ GpuInfo probeGpu() {
     info.multiprocessors = prop.multiProcessorCount;
     // The fat binary holds code for URBIS_CUDA_ARCHITECTURES only: ask whether a kernel loads here.
     cudaFuncAttributes attributes{};
-    status = cudaFuncGetAttributes(&attributes, renderKernel<kRenderBlocksCostly>);
+    status = cudaFuncGetAttributes(&attributes, renderKernel<true>);
     if (status != cudaSuccess) {
         info.reason = "CUDA device " + info.name + " (sm_" + std::to_string(prop.major) + std::to_string(prop.minor) +
                       ") cannot run this build's kernels (" + cudaGetErrorString(status) +
@@ -154,10 +160,10 @@ struct GpuScene::Impl {
         dim3 block(kTileX, kTileY);
         dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
         const SceneView view = scene.view();
-        if (scene.walls.size() > 0)
-            renderKernel<kRenderBlocksCostly><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
+        if (view.costlyLeaves)
+            renderKernel<true><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
         else
-            renderKernel<kRenderBlocksCheap><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
+            renderKernel<false><<<grid, block>>>(view, camera, settings, film.data(), rayCount.data());
         checkLaunch("renderKernel");
     }
 
@@ -167,11 +173,15 @@ struct GpuScene::Impl {
         if (n == 0) return;
         if (shadow) {
             blocked.resize(n);
-            occludedKernel<<<blocksFor(n), kTraceBlock>>>(scene.view(), rays.data(), blocked.data(), n);
+            const SceneView view = scene.view();
+            if (view.costlyLeaves) occludedKernel<true><<<blocksFor(n), kTraceBlock>>>(view, rays.data(), blocked.data(), n);
+            else occludedKernel<false><<<blocksFor(n), kTraceBlock>>>(view, rays.data(), blocked.data(), n);
             checkLaunch("occludedKernel");
         } else {
             hits.resize(n);
-            closestKernel<<<blocksFor(n), kTraceBlock>>>(scene.view(), rays.data(), hits.data(), n);
+            const SceneView view = scene.view();
+            if (view.costlyLeaves) closestKernel<true><<<blocksFor(n), kTraceBlock>>>(view, rays.data(), hits.data(), n);
+            else closestKernel<false><<<blocksFor(n), kTraceBlock>>>(view, rays.data(), hits.data(), n);
             checkLaunch("closestKernel");
         }
     }

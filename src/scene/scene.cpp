@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <tuple>
 
@@ -40,7 +41,9 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
             }
         }
     });
-    Bvh bvh = buildBvh(treeBounds, BvhBuildOptions{}, costly ? treeCosts : std::vector<uint32_t>{});
+    BvhBuildOptions options;
+    options.freeRootLanes = uint32_t(std::min<size_t>(rootIds.size(), kBvhWidth - 2));
+    Bvh bvh = buildBvh(treeBounds, options, costly ? treeCosts : std::vector<uint32_t>{});
     for (uint32_t& prim : bvh.primOrder) prim = treeIds[prim];
     for (size_t i = 0; i < rootIds.size(); ++i) attachLeafAtRoot(bvh, rootIds[i], rootBounds[i]);
 

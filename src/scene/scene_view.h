@@ -15,6 +15,8 @@ struct SceneView {
     /// The BVH's leaf slots of kind I are [kindEnd[I - 1], kindEnd[I]) (from 0 for kind 0): slot s
     /// is record s - kindEnd[I - 1] of the kind's array.
     uint32_t kindEnd[kPrimKindCount] = {};
+    /// Whether any leaf is costly (kBvhCostlyLeaf): the traversal then takes the costly leaves' path.
+    bool costlyLeaves = false;
     Sun sun;
     Sky sky;
 
@@ -31,8 +33,10 @@ SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky) {
 #undef URBIS_VIEW_ARRAY
     uint32_t end = 0;
     forEachPrimKind([&](auto kind) {
-        end += uint32_t(kindArray<typename decltype(kind)::Record>(arrays).size());
+        const uint32_t count = uint32_t(kindArray<typename decltype(kind)::Record>(arrays).size());
+        end += count;
         view.kindEnd[kind.index] = end;
+        view.costlyLeaves |= kCostlyKind<kind.index> && count > 0;
     });
     view.sun = sun;
     view.sky = sky;
