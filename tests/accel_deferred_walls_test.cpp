@@ -27,13 +27,13 @@ bool sameHit(const SurfaceHit& a, const SurfaceHit& b) {
 void compareBothWays(const SceneView& view, const Ray& ray, size_t& hits, size_t& closestDiffers,
                      size_t& blockedDiffers) {
     Ray deferred = ray, immediate = ray;
-    const SurfaceHit d = traceMixed<true>(view, deferred, false);
-    const SurfaceHit i = traceMixed<false>(view, immediate, false);
+    const SurfaceHit d = traceScene<true>(view, deferred, false);
+    const SurfaceHit i = traceScene<false>(view, immediate, false);
     hits += i.valid();
     closestDiffers += !sameHit(d, i);
     deferred = ray;
     immediate = ray;
-    blockedDiffers += traceMixed<true>(view, deferred, true).valid() != traceMixed<false>(view, immediate, true).valid();
+    blockedDiffers += traceScene<true>(view, deferred, true).valid() != traceScene<false>(view, immediate, true).valid();
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 // The BVH over a real imported city against brute force: 100k random rays, same triangle and distance.
 #include "citygen/city_mesher.h"
+#include "geometry/triangle_scene.h"
 #include "math/rng.h"
 #include "osm/osm_import.h"
 #include "scene/scene.h"
@@ -45,7 +46,8 @@ TEST(AccelRealCity, ClosestHitsEqualBruteForceOnTheBavarianVillage) {
     CityMesh mesh = meshCity(city);
     Scene scene = Scene::build(plainCity(mesh), mesh.materials);
     ASSERT_GT(scene.triangles.size(), 500u);
-    SceneView view = scene.view();
+    // Triangles are the first kind, so in a scene of triangles alone a leaf slot is a triangle's index.
+    const TriangleSceneView view{scene.nodes.data(), scene.triangles.data(), uint32_t(scene.triangles.size())};
     Bounds3f b = mesh.cityBounds;
     size_t hits = 0, mismatches = 0;
     constexpr uint32_t kRays = 100000;
@@ -62,10 +64,10 @@ TEST(AccelRealCity, ClosestHitsEqualBruteForceOnTheBavarianVillage) {
             dir = normalize((t.p0 + t.p1 + t.p2) / 3.0f - o);
         }
         Ray ray{o, dir};
-        Hit fast = intersectClosest(view.geometry, ray);
+        Hit fast = intersectClosest(view, ray);
         Hit slow = bruteForce(scene, ray);
         ASSERT_EQ(fast.valid(), slow.valid()) << "ray " << i;
-        EXPECT_EQ(occluded(view.geometry, ray), slow.valid()) << "ray " << i;
+        EXPECT_EQ(occluded(view, ray), slow.valid()) << "ray " << i;
         if (!slow.valid()) continue;
         ++hits;
         // Equal distances may belong to two triangles sharing the hit edge: then either is right.

@@ -2,7 +2,7 @@
 // a curtain wall, on a grid with the usual margins. Each test sets its own frame and grid.
 #pragma once
 
-#include "geometry/wall_record.h"
+#include "scene/wall_record.h"
 
 namespace urbis::test {
 

@@ -20,8 +20,8 @@ Scene sceneOf(const CityModel& city, Representation walls, Bounds3f& bounds) {
     options.geometry.walls = walls;
     CityMesh mesh = meshCity(city, options);
     bounds = mesh.cityBounds;
-    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls);
-    scene.ground = GroundPlane{0.0f, mesh.groundMaterial, true};
+    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, {},
+                               {GroundRecord::around(0.0f, 0.0f, 0.0f, mesh.groundMaterial)});
     scene.sun = makeSun(35.0f, 200.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     return scene;
 }

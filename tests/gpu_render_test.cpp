@@ -28,9 +28,9 @@ void expectVillageImagesMatch(const std::string& geometry) {
     CityMeshOptions options;
     options.geometry = parseGeometryModes(geometry);
     CityMesh mesh = meshCity(city, options);
-    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls);
-    ASSERT_EQ(scene.view().primRefs != nullptr, geometry == "procedural");
-    scene.ground = GroundPlane{0.0f, mesh.groundMaterial, true};
+    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, {},
+                               {GroundRecord::around(0.0f, 0.0f, 0.0f, mesh.groundMaterial)});
+    ASSERT_EQ(!scene.walls.empty(), geometry == "procedural");
     scene.sun = makeSun(35.0f, 140.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     RenderSettings settings;
     settings.width = 192;

@@ -1,7 +1,7 @@
 // Checks on closed triangle meshes shared by the mesher tests: open edges and enclosed volume.
 #pragma once
 
-#include "citygen/triangle_mesh.h"
+#include "scene/triangle_mesh.h"
 
 #include <array>
 #include <cmath>

@@ -55,8 +55,7 @@ TEST(AnalyticRadiance, LambertianPlaneUnderUniformSky) {
 TEST(AnalyticRadiance, GroundPlaneUnderUniformSky) {
     Vec3f albedo{0.3f, 0.6f, 0.9f};
     Vec3f sky{2.0f, 1.0f, 0.5f};
-    Scene scene = Scene::build(TriangleMesh{}, {Material{albedo}});
-    scene.ground = GroundPlane{-3.0f, 0, true};
+    Scene scene = Scene::build(TriangleMesh{}, {Material{albedo}}, {}, {}, {GroundRecord::around(0.0f, 0.0f, -3.0f, 0)});
     scene.sky = Sky::uniform(sky);
     Camera camera = cameraFromHeading(Vec3f{1000, 40, -2000}, 10.0f, -30.0f, 40.0f, 32.0f / 24.0f);
     RenderCounters counters;

@@ -342,7 +342,8 @@ BvhNode emptyWideNode() {
 /// Collapses the binary tree into 4-wide nodes: each wide node takes the children of a
 /// binary node and keeps opening its largest interior child until it has kBvhWidth
 /// (as in Embree's BVH4 builders). Depth first, so siblings' subtrees stay close in memory.
-std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary) {
+/// The root takes at most `rootLanes` children (lanes left free for attachLeafAtRoot).
+std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLanes) {
     std::vector<BvhNode> wide{emptyWideNode()};
     struct Pending {
         uint32_t wide, binary;
@@ -360,7 +361,7 @@ std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary) {
             lanes[count++] = top.first;
             lanes[count++] = top.first + 1;
         }
-        while (count < kBvhWidth) {
+        while (count < (p.wide == 0 ? rootLanes : kBvhWidth)) {
             int open = -1;
             for (int l = 0; l < count; ++l) {
                 const BinaryNode& n = binary[lanes[l]];
@@ -415,9 +416,39 @@ Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& opt
     }
     Builder builder(primBounds, primCosts, options, bvh);
     builder.run();
-    bvh.nodes = collapse(builder.compact());
+    bvh.nodes = collapse(builder.compact(), std::max(2, kBvhWidth - int(options.freeRootLanes)));
     if (!primCosts.empty()) markCostlyLeaves(primCosts, bvh);
     return bvh;
+}
+
+void attachLeafAtRoot(Bvh& bvh, uint32_t prim, const Bounds3f& bounds) {
+    int lane = -1;
+    for (int l = 0; l < kBvhWidth && lane < 0; ++l)
+        if (bvh.nodes[0].primCount[l] == 0 && bvh.nodes[0].box(l).empty()) lane = l;
+    if (lane < 0) {
+        // A new root above the old one, which moves every node up by one.
+        Bounds3f old;
+        for (int l = 0; l < kBvhWidth; ++l) old.extend(bvh.nodes[0].box(l));
+        for (BvhNode& node : bvh.nodes)
+            for (int l = 0; l < kBvhWidth; ++l)
+                if (node.primCount[l] == 0 && !node.box(l).empty()) ++node.child[l];
+        BvhNode root = emptyWideNode();
+        for (int axis = 0; axis < 3; ++axis) {
+            root.bounds[axis][0] = old.lo[axis];
+            root.bounds[axis + 3][0] = old.hi[axis];
+        }
+        root.child[0] = 1;
+        bvh.nodes.insert(bvh.nodes.begin(), root);
+        lane = 1;
+    }
+    BvhNode& root = bvh.nodes[0];
+    for (int axis = 0; axis < 3; ++axis) {
+        root.bounds[axis][lane] = bounds.lo[axis];
+        root.bounds[axis + 3][lane] = bounds.hi[axis];
+    }
+    root.child[lane] = uint32_t(bvh.primOrder.size());
+    root.primCount[lane] = 1;
+    bvh.primOrder.push_back(prim);
 }
 
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {

@@ -7,11 +7,8 @@
 #include <cfloat>
 #include <cstdint>
 
-#if !URBIS_GPU_CODE && (defined(__SSE2__) || defined(_M_X64))
+#if URBIS_HAVE_SSE
 #include <emmintrin.h>
-#define URBIS_HAVE_SSE 1
-#else
-#define URBIS_HAVE_SSE 0
 #endif
 
 namespace urbis {
@@ -27,12 +24,12 @@ struct BvhRay {
     int nearPlane[3];   ///< row of BvhNode::bounds with the entry plane per axis: lo (0..2) if the direction is positive, else hi (3..5)
 
     /// 1/x, or ±FLT_MAX where |x| is so small that 1/x would overflow; keeps (plane - origin)
-    /// * invDir free of NaN (0 * inf) for axis-parallel rays.
+    /// * invDir free of NaN (0 * inf) for axis-parallel rays. Exact (urbis.h): it decides hits.
     URBIS_HD static float safeInverse(float x) {
-        const float tiny = 1.0f / FLT_MAX;
+        constexpr float tiny = 1.0f / FLT_MAX;
         if (x >= 0.0f && x <= tiny) return FLT_MAX;
         if (x < 0.0f && x >= -tiny) return -FLT_MAX;
-        return 1.0f / x;
+        return exactDiv(1.0f, x);
     }
 
     URBIS_HD explicit BvhRay(const Ray& ray) {
@@ -49,7 +46,8 @@ struct BvhRay {
 /// See "Robust BVH Ray Traversal", T. Ize, JCGT 2(2), 2013. Writes the entry distance of
 /// each lane and returns a bit mask of the lanes whose box overlaps [tmin, tmax].
 /// On x86 CPUs the four lanes go through SSE; elsewhere (nvcc, other CPUs) through the
-/// scalar loop, which computes the same values bit for bit (same operations, same order).
+/// scalar loop, which computes the same values bit for bit (same operations, same order; a
+/// difference times a number, which no build contracts).
 URBIS_HD inline unsigned intersectLanes(const BvhNode& node, const BvhRay& r, float tmin, float tmax,
                                         float (&tEntry)[kBvhWidth]) {
     constexpr float kRobustScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
@@ -100,8 +98,7 @@ URBIS_HD inline unsigned intersectLanes(const BvhNode& node, const BvhRay& r, fl
 /// Whether every lane of a warp that runs this together wants to do something costly now, so that
 /// the costly code runs with all of them rather than a few at a time; on the CPU (a ray is its own
 /// warp) whether this one does. Every lane that reaches the call must make it, wanting or not.
-/// Half or a quarter of the lanes were measured too: all is fastest (docs/gpu_notes.md, eighth
-/// session).
+/// Half or a quarter of the lanes were measured too: all is fastest (measured: docs/gpu_notes.md).
 URBIS_HD inline bool warpAll(bool wants) {
 #if URBIS_GPU_CODE
     return __all_sync(__activemask(), wants);
@@ -126,7 +123,7 @@ URBIS_HD inline void sortFour(uint32_t (&k)[4]) {
 }
 
 /// Closest-hit or any-hit (`anyHit`) traversal of a BVH built by buildBvh, in world space.
-/// intersect(uint32_t prim, Ray& ray, Hit& hit) -> bool tests one primitive (prim indexes leaf
+/// intersect(uint32_t prim, Ray& ray, HitRecord& hit) -> bool tests one primitive (prim indexes leaf
 /// order, i.e. positions in the build's primOrder); on a hit it fills hit and shrinks ray.tmax.
 /// Leaves of a visited node are tested at once (shrinking ray.tmax early); interior children are
 /// visited nearest first and skipped when they start beyond the closest hit so far; any-hit
@@ -137,13 +134,14 @@ URBIS_HD inline void sortFour(uint32_t (&k)[4]) {
 /// With CostlyLeaves, leaves marked kBvhCostlyLeaf go to intersectCostly instead. With Defer (by
 /// default on the GPU only, where it pays) they are deferred: a lane holds one such leaf and goes on
 /// with the traversal (or, with nothing else to do, waits) until every lane of its warp that is
-/// traversing holds one (warpAll), so that the costly test runs with all of them (docs/gpu_notes.md,
-/// eighth session); without, they are tested where the traversal meets them. The order of tests
-/// then differs, so equal distances go to the lower primitive index: the CPU and the GPU find the
-/// same hit. The CPU's tests run the deferred traversal too, each ray its own warp.
-template <bool CostlyLeaves, bool Defer = CostlyLeaves && URBIS_GPU_CODE, typename IntersectPrim,
+/// traversing holds one (warpAll), so that the costly test runs with all of them; without, they
+/// are tested where the traversal meets them. The order of tests then differs, so equal distances
+/// go to the lower primitive index: the CPU and the GPU find the same hit. The CPU's tests run the
+/// deferred traversal too, each ray its own warp. HitRecord is the callers' (Hit, or geometry/'s
+/// PrimHit); the traversal only passes it on.
+template <bool CostlyLeaves, bool Defer = CostlyLeaves && URBIS_GPU_CODE, typename HitRecord, typename IntersectPrim,
           typename IntersectCostly>
-URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, Hit& hit, bool anyHit,
+URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, HitRecord& hit, bool anyHit,
                           IntersectPrim&& intersect, IntersectCostly&& intersectCostly) {
     // A deferred leaf (one primitive: see buildBvh) on the stack or pending: its slot, with kLeafItem set.
     constexpr uint32_t kNoItem = 0xffffffffu, kLeafItem = 0x80000000u;
@@ -210,8 +208,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, Hit& 
         float tEntry[kBvhWidth];
         const unsigned hitMask = intersectLanes(node, r, ray.tmin, ray.tmax, tEntry);
         // The node's children and leaf sizes, read at once and picked by selects: a loop that is not
-        // unrolled would read them from memory lane by lane, each load's latency on the way
-        // (docs/gpu_notes.md, ninth session).
+        // unrolled would read them from memory lane by lane, each load's latency on the way.
         static_assert(kBvhWidth == 4, "at, sortFour and the lists below take four lanes");
         const uint32_t child[kBvhWidth] = {node.child[0], node.child[1], node.child[2], node.child[3]};
         const uint32_t count[kBvhWidth] = {node.primCount[0], node.primCount[1], node.primCount[2], node.primCount[3]};
@@ -267,7 +264,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, Hit& 
         current = kNoItem;
 #if URBIS_GPU_CODE
         // A sorting network, then the keys pushed in order; a lane's child by selects (`at`). 3-7 %
-        // faster on the H200 than ranks (docs/gpu_notes.md, eighth session).
+        // faster on the H200 than ranks (measured: docs/gpu_notes.md).
         sortFour(key);
         for (int i = kBvhWidth - 1; i >= 0; --i) {
             if (key[i] == ~0u) continue;
@@ -278,8 +275,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, Hit& 
         }
 #else
         // Each lane's place is its rank among the keys, written straight to the stack: the same
-        // entries in the same places as the GPU's network, 7 % faster on the CPU (one thread,
-        // docs/gpu_notes.md, eighth session).
+        // entries in the same places as the GPU's network, 7 % faster on the CPU (one thread).
         int queuedCount = 0;
         for (int l = 0; l < kBvhWidth; ++l) queuedCount += int(queued >> l & 1u);
         for (int l = 0; l < kBvhWidth; ++l) {
@@ -298,8 +294,8 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, Hit& 
 }
 
 /// traverseBvh without costly leaves: every primitive goes to `intersect`.
-template <typename IntersectPrim>
-URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, Hit& hit, bool anyHit,
+template <typename HitRecord, typename IntersectPrim>
+URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, HitRecord& hit, bool anyHit,
                           IntersectPrim&& intersect) {
     return traverseBvh<false>(nodes, r, ray, hit, anyHit, intersect, intersect);
 }

@@ -1,5 +1,6 @@
 #include "app/bench_command.h"
 
+#include "app/memory_json.h"
 #include "app/memory_limit.h"
 #include "app/output_paths.h"
 #include "app/render_device.h"
@@ -79,7 +80,7 @@ RayBatches makeRays(const Scene& scene, const Camera& camera, const RenderSettin
             b.primary[i] = ray;
             SurfaceHit hit = intersectScene(view, ray);
             if (!hit.valid()) continue;
-            hitBuilding[i] = hit.kind != SurfaceKind::Ground;
+            hitBuilding[i] = hit.kind != kPrimKindOf<GroundRecord>;
             Vec3f origin = offsetRayOrigin(ray.origin + ray.dir * hit.t, hit.normal);
             SampleStream rng{settings.seed, uint32_t(i), 0, 16};
             float u1 = rng.draw(), u2 = rng.draw(), u3 = rng.draw(), u4 = rng.draw();
@@ -220,9 +221,7 @@ void runBench(const BenchOptions& o) {
     std::printf("%-28s %10s %11.3f %11.3f %14s\n", label, "-", frameMed, frameBest, "-");
     json["frame"] = {{"spp", frame.spp}, {"max_depth", frame.maxDepth}, {"median_ms", frameMed}, {"min_ms", frameBest},
                      {"ms", frameMs}};
-    json["bytes_device"] = {{"bvh", memory.nodes}, {"triangles", memory.triangles},
-                            {"triangle_info", memory.triangleInfo}, {"materials", memory.materials},
-                            {"film", memory.film}, {"rays", memory.rays}, {"total", memory.total()}};
+    json["bytes_device"] = memoryJson(memory);
     if (!o.jsonFile.empty()) writeTextFileAtomically(o.jsonFile, json.dump(2) + "\n");
 }
 

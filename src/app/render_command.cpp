@@ -1,6 +1,7 @@
 #include "app/render_command.h"
 
 #include "app/camera_checks.h"
+#include "app/memory_json.h"
 #include "app/memory_limit.h"
 #include "app/option_parsing.h"
 #include "app/output_paths.h"
@@ -193,8 +194,9 @@ PreparedScene prepareScene(const RenderOptions& o, size_t memoryLimit) {
     p.secondsCitygen = secondsSince(t0);
 
     t0 = Clock::now();
-    p.scene = Scene::build(p.mesh.mesh, p.mesh.materials, p.mesh.walls, tileSize);
-    p.scene.ground = GroundPlane{0.0f, p.mesh.groundMaterial, true};
+    const Vec3f centre = p.mesh.cityBounds.empty() ? Vec3f{} : p.mesh.cityBounds.centre();
+    p.scene = Scene::build(p.mesh.mesh, p.mesh.materials, p.mesh.walls, tileSize,
+                           {GroundRecord::around(centre.x, centre.z, 0.0f, p.mesh.groundMaterial)});
     p.scene.sun = sun;
     p.secondsBvh = secondsSince(t0);
 
@@ -238,16 +240,11 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
         {"bvh_nodes", scene.nodes.size()},
         {"materials", scene.materials.size()},
         {"bytes_scene", memory.total()},
-        {"bytes_by_kind", {{"triangles", memory.triangles}, {"triangle_info", memory.triangleInfo},
-                           {"walls", memory.walls}, {"prim_refs", memory.primRefs},
-                           {"materials", memory.materials}, {"bvh", memory.bvh}}},
+        {"bytes_by_kind", memoryJson(memory)},
         {"width", o.settings.width}, {"height", o.settings.height}, {"spp", o.settings.spp},
         {"seed", o.settings.seed}, {"threads", threads}, {"device", device.device},
         {"device_name", device.name},
-        {"bytes_device", {{"bvh", device.memory.nodes}, {"triangles", device.memory.triangles},
-                          {"triangle_info", device.memory.triangleInfo}, {"prim_refs", device.memory.primRefs},
-                          {"walls", device.memory.walls}, {"materials", device.memory.materials},
-                          {"film", device.memory.film}, {"total", device.memory.total()}}},
+        {"bytes_device", memoryJson(device.memory)},
         {"seconds", {{"import", prepared.secondsImport}, {"citygen", prepared.secondsCitygen}, {"bvh", prepared.secondsBvh},
                      {"render", counters.seconds}, {"write", secondsWrite}}},
         {"seconds_render", counters.seconds},

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "citygen/facade_layout.h"
-#include "citygen/triangle_mesh.h"
+#include "scene/triangle_mesh.h"
 #include "model/city_model.h"
 
 #include <geos_c.h>

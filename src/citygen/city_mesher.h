@@ -3,8 +3,8 @@
 #pragma once
 
 #include "citygen/geometry_modes.h"
-#include "citygen/triangle_mesh.h"
-#include "geometry/wall_record.h"
+#include "scene/triangle_mesh.h"
+#include "scene/wall_record.h"
 #include "math/bounds.h"
 #include "model/city_model.h"
 #include "scene/material.h"

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "citygen/facade_style.h"
-#include "geometry/wall_record.h"
+#include "scene/wall_record.h"
 
 namespace urbis {
 

@@ -2,8 +2,8 @@
 // once as stored triangles (the thesis's comparison, and what an export writes) (host).
 #pragma once
 
-#include "citygen/triangle_mesh.h"
-#include "geometry/wall_record.h"
+#include "scene/triangle_mesh.h"
+#include "scene/wall_record.h"
 
 namespace urbis {
 

@@ -2,7 +2,7 @@
 // apart from geometry (host).
 #pragma once
 
-#include "geometry/wall_record.h"
+#include "scene/wall_record.h"
 #include "model/city_model.h"
 
 namespace urbis {

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "citygen/roof_shapes.h"
-#include "citygen/triangle_mesh.h"
+#include "scene/triangle_mesh.h"
 #include "model/city_model.h"
 
 #include <vector>

@@ -6,7 +6,7 @@
 // watertight.
 #pragma once
 
-#include "citygen/triangle_mesh.h"
+#include "scene/triangle_mesh.h"
 #include "model/city_model.h"
 
 #include <array>

@@ -29,8 +29,8 @@ struct WatertightRay {
             kx = ky;
             ky = swap;
         }
-        sx = ray.dir[kx] / ray.dir[kz];
-        sy = ray.dir[ky] / ray.dir[kz];
+        sx = exactDiv(ray.dir[kx], ray.dir[kz]);
+        sy = exactDiv(ray.dir[ky], ray.dir[kz]);
         sz = kz == 0 ? invDir[0] : (kz == 1 ? invDir[1] : invDir[2]);
     }
     URBIS_HD explicit WatertightRay(const Ray& ray) : WatertightRay(ray, BvhRay(ray).invDir) {}
@@ -38,14 +38,9 @@ struct WatertightRay {
 
 /// a*b - c*d rounded as two products and one difference, never contracted to a fused
 /// multiply-add: edge functions of a shared edge must be exact negatives of each other in
-/// both triangles, or rays leak between them (nvcc contracts by default; g++ does not in
-/// ISO mode).
+/// both triangles, or rays leak between them (the GPU build contracts; g++ does not in ISO mode).
 URBIS_HD inline float differenceOfProductsUnfused(float a, float b, float c, float d) {
-#if URBIS_GPU_CODE
-    return __fsub_rn(__fmul_rn(a, b), __fmul_rn(c, d));
-#else
-    return a * b - c * d;
-#endif
+    return exactSub(exactMul(a, b), exactMul(c, d));
 }
 
 /// Watertight intersection of a ray with a two-sided triangle (Woop, Benthin, Wald 2013):
@@ -62,9 +57,10 @@ URBIS_HD inline bool intersectTriangle(const Triangle& tri, const Ray& ray, cons
     const float c[3] = {tri.p2.x - wr.origin.x, tri.p2.y - wr.origin.y, tri.p2.z - wr.origin.z};
     // Shear and scale the vertices into ray space, where the ray is the +z axis.
     const float az = a[wr.kz], bz = b[wr.kz], cz = c[wr.kz];
-    const float ax = a[wr.kx] - wr.sx * az, ay = a[wr.ky] - wr.sy * az;
-    const float bx = b[wr.kx] - wr.sx * bz, by = b[wr.ky] - wr.sy * bz;
-    const float cx = c[wr.kx] - wr.sx * cz, cy = c[wr.ky] - wr.sy * cz;
+    // Every product that meets a sum is exact (urbis.h): the test decides hits on both backends.
+    const float ax = a[wr.kx] - exactMul(wr.sx, az), ay = a[wr.ky] - exactMul(wr.sy, az);
+    const float bx = b[wr.kx] - exactMul(wr.sx, bz), by = b[wr.ky] - exactMul(wr.sy, bz);
+    const float cx = c[wr.kx] - exactMul(wr.sx, cz), cy = c[wr.ky] - exactMul(wr.sy, cz);
     // Scaled barycentrics: 2D edge functions of the projected edges bc, ca, ab.
     float e0 = differenceOfProductsUnfused(cx, by, cy, bx);
     float e1 = differenceOfProductsUnfused(ax, cy, ay, cx);
@@ -79,8 +75,8 @@ URBIS_HD inline bool intersectTriangle(const Triangle& tri, const Ray& ray, cons
     if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
     const float det = e0 + e1 + e2;
     if (det == 0.0f) return false;
-    const float scaledT = e0 * (wr.sz * az) + e1 * (wr.sz * bz) + e2 * (wr.sz * cz);
-    const float invDet = 1.0f / det;
+    const float scaledT = exactMul(e0, wr.sz * az) + exactMul(e1, wr.sz * bz) + exactMul(e2, wr.sz * cz);
+    const float invDet = exactDiv(1.0f, det);
     const float hitT = scaledT * invDet;
     if (!(hitT > ray.tmin && hitT < ray.tmax)) return false;
     t = hitT;

@@ -3,18 +3,11 @@
 
 #include "accel/bvh_traverse.h"
 #include "geometry/triangle_intersect.h"
+#include "scene/triangle_scene_view.h"
 
 #include <cstdint>
 
 namespace urbis {
-
-/// Non-owning view of a triangle BVH: nodes from buildBvh over the triangles' bounds and the
-/// triangles reordered by its primOrder (triangles[i] = original[primOrder[i]]).
-struct TriangleSceneView {
-    const BvhNode* nodes;
-    const Triangle* triangles;
-    uint32_t triangleCount;
-};
 
 /// The closest triangle hit with ray.tmin < t < ray.tmax (anyHit false), or the first one found
 /// in any order (anyHit true: a shadow ray), in world space. Hit::prim is the index into

@@ -2,7 +2,8 @@
 // plane's margins are one plane test, and the floor x slot grid is walked cell by cell along the
 // ray (as a 2D DDA, J. Amanatides and A. Woo, "A Fast Voxel Traversal Algorithm for Ray Tracing",
 // Eurographics 1987, each step taken from the bounds of the cell it leaves), testing only the
-// parts of the cells the ray passes through.
+// parts of the cells the ray passes through. What decides the hit uses urbis.h's exact operations,
+// so that a ray hits the same part at the same distance on both backends.
 #pragma once
 
 #include "accel/bvh_traverse.h"
@@ -33,19 +34,22 @@ struct WallRay {
     /// BvhRay has it already).
     URBIS_HD WallRay(const WallRecord& wall, const Ray& ray, float invDirY) : tmin(ray.tmin) {
         const Vec3f rel = ray.origin - wall.origin;
-        o = {dot(rel, wall.axisU), rel.y, dot(rel, wall.normal)};
-        d = {dot(ray.dir, wall.axisU), ray.dir.y, dot(ray.dir, wall.normal)};
+        o = {exactDot(rel, wall.axisU), rel.y, exactDot(rel, wall.normal)};
+        d = {exactDot(ray.dir, wall.axisU), ray.dir.y, exactDot(ray.dir, wall.normal)};
         invD = {BvhRay::safeInverse(d.x), invDirY, BvhRay::safeInverse(d.z)};
     }
     URBIS_HD WallRay(const WallRecord& wall, const Ray& ray) : WallRay(wall, ray, BvhRay::safeInverse(ray.dir.y)) {}
+
+    /// o + t d on axis a (exact).
+    URBIS_HD float at(int a, float t) const { return exactMulAdd(t, d[a], o[a]); }
 
     /// Whether the ray meets the plane w = w0 at tmin < t < tmax: then t and the point's u, v there.
     URBIS_HD bool crossesW(float w0, float tmax, float& t, float& u, float& v) const {
         if (d.z == 0.0f) return false;
         t = (w0 - o.z) * invD.z;
         if (!(t > tmin && t < tmax)) return false;
-        u = o.x + t * d.x;
-        v = o.y + t * d.y;
+        u = at(0, t);
+        v = at(1, t);
         return true;
     }
 };
@@ -123,7 +127,7 @@ URBIS_HD inline bool intersectWallPart(const WallPart& p, const WallRay& r, floa
         // As the twin's padded quads: its glass wins where it overlaps the quads around it (it is
         // tested first), and its frame overlaps the jambs. So the panel reaches e beyond the
         // opening, and a hole stops e short of it.
-        const float x = r.o.x + t * r.d.x, y = r.o.y + t * r.d.y;
+        const float x = r.at(0, t), y = r.at(1, t);
         const float g = p.opening == PartOpening::Hole ? -e : e;
         if (x >= p.openingLo.x - g && x <= p.openingHi.x + g && y >= p.openingLo.y - g && y <= p.openingHi.y + g) {
             if (p.opening == PartOpening::Hole) return false;
@@ -143,8 +147,7 @@ URBIS_HD inline bool intersectWallMargins(const WallRecord& wall, const TileRect
     float t, u, v;
     if (!r.crossesW(0.0f, tmax, t, u, v)) return false;
     if (u < tile.u0 - e || u > tile.u1 + e || v < tile.v0 - e || v > tile.v1 + e) return false;
-    const bool inGrid = u > wall.gridU + e && u < wall.gridU + wall.gridWidth() - e && v > wall.gridV + e &&
-                        v < wall.gridV + wall.gridHeight() - e;
+    const bool inGrid = u > wall.gridU + e && u < wall.gridU1() - e && v > wall.gridV + e && v < wall.gridV1() - e;
     if (inGrid) return false;
     tmax = t;
     hit = {t, 2u, wall.wallMaterial, SurfacePart::Facade};
@@ -161,14 +164,14 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect
     if (!(wall.parapetHeight > 0.0f) || wall.tileFloorEnd() < int(wall.floors)) return false;
     SegmentClip slab{r.tmin, tmax};
     slab.clip(r.o.z, r.d.z, r.invD.z, -wall.parapetThickness - e, e);
-    if (slab.empty() || fmaxf(r.o.y + slab.t0 * r.d.y, r.o.y + slab.t1 * r.d.y) < wall.height - wall.parapetHeight - e)
+    if (slab.empty() || fmaxf(r.at(1, slab.t0), r.at(1, slab.t1)) < wall.height - wall.parapetHeight - e)
         return false;
     const float uLo = wall.slot0 == 0 ? -3.0e38f : tile.u0;
     const float uHi = wall.tileSlotEnd() >= int(wall.slots) ? 3.0e38f : tile.u1;
     bool found = false;
     if (r.d.y != 0.0f) {
         const float t = (wall.height - r.o.y) * r.invD.y;
-        const float u = r.o.x + t * r.d.x, w = r.o.z + t * r.d.z;
+        const float u = r.at(0, t), w = r.at(2, t);
         float start, end;
         parapetSpanAt(wall, w, start, end);
         if (t > r.tmin && t < tmax && w >= -wall.parapetThickness - e && w <= e && u >= fmaxf(uLo, start) - e &&
@@ -179,7 +182,7 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect
         }
     }
     // The inner face (the twin's quad) tested as a point on its plane: a second copy of
-    // intersectWallPart would cost the GPU's instruction cache more (docs/gpu_notes.md).
+    // intersectWallPart would cost the GPU's instruction cache more.
     float t, u, v;
     if (!r.crossesW(-wall.parapetThickness, tmax, t, u, v)) return found;
     const WallPart inner = parapetInnerFace(wall);
@@ -205,7 +208,7 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     const WallRay r(wall, ray, invDirY);
     // The margins, the parapet and the cells' column each turn away the rays that miss them: a slab
     // test of the tile's whole box first turned away few (5-9 % of the rays that reach a wall in a
-    // generated city) for its cost (docs/gpu_notes.md, ninth session).
+    // generated city) for its cost.
     const TileRect tile(wall);
     float tmax = ray.tmax;
     bool found = intersectWallMargins(wall, tile, r, tmax, hit);
@@ -217,9 +220,8 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     // Clip the ray to the tile's column; where it enters the column decides the side of the glass
     // it can reach (every cell part lies in the column), then clip to that side's slab.
     constexpr float e = kWallPartPadding;
-    const float lo[2] = {wall.gridU + wall.slotWidth * float(slot0) - e, wall.gridV + wall.floorHeight * float(floor0) - e};
-    const float hi[2] = {wall.gridU + wall.slotWidth * float(slotEnd) + e,
-                         wall.gridV + wall.floorHeight * float(floorEnd) + e};
+    const float lo[2] = {wall.slotU(slot0) - e, wall.floorV(floor0) - e};
+    const float hi[2] = {wall.slotU(slotEnd) + e, wall.floorV(floorEnd) + e};
     SegmentClip s{r.tmin, tmax};
     s.clipToBox(r, {lo[0], lo[1], 0.0f}, {hi[0], hi[1], 0.0f}, 2);
     if (s.empty()) return found;
@@ -231,14 +233,13 @@ URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallH
     // The cell of the entry point; from each cell the walk goes on through the side of the cell (its
     // bounds from cellLayout) that the ray leaves by first: a ray meets few cells of a wall (1.1 on
     // average in a generated city), so the walk keeps no increments between them.
-    const float pu = r.o.x + s.t0 * r.d.x, pv = r.o.y + s.t0 * r.d.y;
-    int i = int(floorf((pu - wall.gridU) / wall.slotWidth)), j = int(floorf((pv - wall.gridV) / wall.floorHeight));
+    const float pu = r.at(0, s.t0), pv = r.at(1, s.t0);
+    int i = int(floorf(exactDiv(pu - wall.gridU, wall.slotWidth))), j = int(floorf(exactDiv(pv - wall.gridV, wall.floorHeight)));
     i = i < slot0 ? slot0 : (i >= slotEnd ? slotEnd - 1 : i);
     j = j < floor0 ? floor0 : (j >= floorEnd ? floorEnd - 1 : j);
     for (;;) {
         // One part loop for every cell, two parts on either side of the glass (a balcony adds four
-        // in front): closed forms let a warp's lanes take different paths and cost the GPU more
-        // (docs/gpu_notes.md).
+        // in front): closed forms let a warp's lanes take different paths and cost the GPU more.
         const CellLayout c = cellLayout(wall, uint32_t(j), uint32_t(i));
         const CellCoords coords = cellCoords(wall, c);
         const int parts = cellPartCount(wall, c, side);

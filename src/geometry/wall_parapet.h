@@ -30,9 +30,9 @@ URBIS_HD inline WallPart parapetInnerFace(const WallRecord& wall) {
 /// u of the parapet's top edge at wall depth w (in [-thickness, 0]): its start and end, along the
 /// mitres from the wall's ends (w = 0) to the inner face's ends.
 URBIS_HD inline void parapetSpanAt(const WallRecord& wall, float w, float& start, float& end) {
-    const float depth = -w / wall.parapetThickness;
+    const float depth = exactDiv(-w, wall.parapetThickness);
     start = wall.parapetInner0 * depth;
-    end = wall.width + (wall.parapetInner1 - wall.width) * depth;
+    end = exactMulAdd(wall.parapetInner1 - wall.width, depth, wall.width);
 }
 
 } // namespace urbis

@@ -3,7 +3,7 @@
 // intersector and the triangle twin both call these, so the two representations agree.
 #pragma once
 
-#include "geometry/wall_record.h"
+#include "scene/wall_record.h"
 #include "math/hash.h"
 #include "scene/surface_part.h"
 
@@ -66,8 +66,8 @@ struct CellParts {
 /// The plain margins of a wall around its cell grid, as quads in the plane w = 0 (left, right,
 /// bottom, top; empty ones left out).
 URBIS_HD inline void marginParts(const WallRecord& wall, CellParts& out) {
-    const float u0 = wall.gridU, u1 = wall.gridU + wall.gridWidth();
-    const float v0 = wall.gridV, v1 = wall.gridV + wall.gridHeight();
+    const float u0 = wall.gridU, u1 = wall.gridU1();
+    const float v0 = wall.gridV, v1 = wall.gridV1();
     const uint32_t m = wall.wallMaterial;
     if (u0 > 0.0f) out.add({{0, 0, 0}, {u0, wall.height, 0}, 2, SurfacePart::Facade, m});
     if (u1 < wall.width) out.add({{u1, 0, 0}, {wall.width, wall.height, 0}, 2, SurfacePart::Facade, m});
@@ -89,12 +89,12 @@ struct CellLayout {
     bool balcony;
 };
 
-/// The layout of cell (floor, slot) of `wall`.
+/// The layout of cell (floor, slot) of `wall`; exact arithmetic (urbis.h): it decides hits.
 URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, uint32_t slot) {
     CellLayout c;
-    c.u0 = wall.gridU + wall.slotWidth * float(slot);
+    c.u0 = wall.slotU(int(slot));
     c.u1 = c.u0 + wall.slotWidth;
-    c.v0 = wall.gridV + wall.floorHeight * float(floor);
+    c.v0 = wall.floorV(int(floor));
     c.v1 = c.v0 + wall.floorHeight;
     HashStream rng = cellRandom(wall, floor, slot);
     const bool lit = rng.uniform() < kLitRoomChance;
@@ -110,10 +110,10 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
         c.ou0 = c.u0 + 0.25f;
         c.ou1 = c.u1 - 0.25f;
         c.ov0 = c.v0 + 0.35f;
-        c.ov1 = c.v1 - fminf(0.7f, 0.25f * wall.floorHeight);
+        c.ov1 = c.v1 - fminf(0.7f, exactMul(0.25f, wall.floorHeight));
         return c;
     }
-    c.ou0 = c.u0 + 0.5f * (wall.slotWidth - wall.windowWidth);
+    c.ou0 = exactMulAdd(0.5f, wall.slotWidth - wall.windowWidth, c.u0);
     c.ou1 = c.ou0 + wall.windowWidth;
     c.ov1 = c.v0 + wall.sillHeight + wall.windowHeight;
     c.balcony = (wall.flags & kWallBalconies) && floor > 0 && choice < kBalconyChance;
@@ -123,10 +123,10 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
 
 // A cell's parts one at a time, by index, so that the intersector tests them in one loop: lanes of
 // a GPU warp at different parts of different cells still run the one part test together (a list
-// written part by part from some 30 places ran it at each place with a few lanes; docs/gpu_notes.md).
+// written part by part from some 30 places ran it at each place with a few lanes).
 // Each part is a recipe: which of the cell's coordinates (CellCoords) its corners take, its axis,
 // SurfacePart and material. One short piece of code builds every part from its recipe; a function
-// per part kind made the wall code too large for the GPU's instruction cache (docs/gpu_notes.md).
+// per part kind made the wall code too large for the GPU's instruction cache.
 // Recipes 0-21 make a punched cell as the triangle twin stores it: 0-3 the frame around the opening
 // in the wall plane, 4-7 its jambs, 8 the glass, 9-12 the room's front wall (the frame in the glass
 // plane), 13-17 the room (back, sides, floor, ceiling), 18-21 the balcony (slab, front and side

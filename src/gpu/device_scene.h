@@ -1,4 +1,5 @@
-// A Scene's flat arrays mirrored in device memory. CUDA-only header (included by .cu files alone).
+// A Scene's arrays (scene_arrays.h) mirrored in device memory. CUDA-only header (included by .cu
+// files alone).
 #pragma once
 
 #include "gpu/device_buffer.h"
@@ -6,51 +7,37 @@
 
 namespace urbis {
 
-/// The device copies of a Scene's arrays; small records (ground, sun, sky) travel by value in view().
+/// The device copies of a Scene's arrays; small records (sun, sky) travel by value in view().
 struct DeviceScene {
-    DeviceBuffer<BvhNode> nodes;
-    DeviceBuffer<Triangle> triangles;
-    DeviceBuffer<TriangleInfo> triangleInfo;
-    DeviceBuffer<uint32_t> primRefs;
-    DeviceBuffer<WallRecord> walls;
-    DeviceBuffer<Material> materials;
-    GroundPlane ground;
+#define URBIS_DEVICE_MEMBER(Type, name, key) DeviceBuffer<Type> name;
+    URBIS_SCENE_ARRAYS(URBIS_DEVICE_MEMBER)
+#undef URBIS_DEVICE_MEMBER
     Sun sun;
     Sky sky;
 
-    /// The one place that pairs each host array of a Scene with its device buffer: new scene
-    /// arrays (facade records, lamps, ...) are added here and in view(), nowhere else.
-    /// f(const std::vector<T>& host, DeviceBuffer<T>& device) is called for each pair.
-    template <typename F>
-    void forEachArray(const Scene& scene, F&& f) {
-        f(scene.nodes, nodes);
-        f(scene.triangles, triangles);
-        f(scene.info, triangleInfo);
-        f(scene.primRefs, primRefs);
-        f(scene.walls, walls);
-        f(scene.materials, materials);
-    }
-
     /// Device bytes the arrays of `scene` take.
-    static size_t bytesFor(const Scene& scene) {
-        size_t bytes = 0;
-        DeviceScene probe;
-        probe.forEachArray(scene, [&](const auto& host, auto&) { bytes += host.size() * sizeof(host[0]); });
-        return bytes;
-    }
+    static size_t bytesFor(const Scene& scene) { return scene.memory().total(); }
 
     /// Copies every array of `scene` to the device, and its small records by value.
     void upload(const Scene& scene) {
-        forEachArray(scene, [](const auto& host, auto& device) { device.upload(host); });
-        ground = scene.ground;
+#define URBIS_DEVICE_UPLOAD(Type, name, key) name.upload(scene.name);
+        URBIS_SCENE_ARRAYS(URBIS_DEVICE_UPLOAD)
+#undef URBIS_DEVICE_UPLOAD
         sun = scene.sun;
         sky = scene.sky;
     }
 
-    /// What kernels read: the same SceneView the CPU backend gets, over device pointers.
-    SceneView view() const {
-        return makeSceneView(nodes, triangles, triangleInfo, primRefs, walls, materials, ground, sun, sky);
+    /// Device bytes held now, by array.
+    SceneMemory memory() const {
+        SceneMemory out;
+#define URBIS_DEVICE_BYTES(Type, name, key) out.name = name.bytes();
+        URBIS_SCENE_ARRAYS(URBIS_DEVICE_BYTES)
+#undef URBIS_DEVICE_BYTES
+        return out;
     }
+
+    /// What kernels read: the same SceneView the CPU backend gets, over device pointers.
+    SceneView view() const { return makeSceneView(*this, sun, sky); }
 };
 
 } // namespace urbis

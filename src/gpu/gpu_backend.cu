@@ -20,25 +20,27 @@ namespace {
 constexpr int kTileX = 8, kTileY = 16;   // 128 threads; each warp covers 8 x 4 pixels
 constexpr int kTraceBlock = 128;
 
-// Blocks per SM that a render kernel's registers must allow. Left free, ptxas took 158 registers for the
-// inlined wall part tests: three blocks per SM, and frames of stored triangles 25 % slower. Stored
-// triangles run fastest at five blocks (96 registers; 14 % slower at four). The walls' kernel is bound
-// by instruction fetches: at four blocks (128 registers) it spills nothing, 120 instructions fewer,
-// and fewer warps share the instruction cache; measured against five, +5 % at 20 m on the generated
-// city, -3 % at 80 m (measured: docs/gpu_notes.md).
-template <SceneLayout Layout> constexpr int kRenderBlocksPerSm = Layout == SceneLayout::Mixed ? 4 : 5;
+// Each kernel is compiled twice, for scenes with costly leaves (walls) and without: the kernel fixes
+// SceneView::costlyLeaves, so the traversal it does not take is left out (traceScene), and each gets
+// its register budget. Not one per kind: the kinds share both (the leaf dispatch tests whichever a
+// scene holds). Blocks per SM that the render kernel's registers must allow: left free, ptxas took 158
+// registers for the inlined wall part tests, three blocks per SM. With costly leaves four (128
+// registers): the wall code spills least and fewer warps share the instruction cache. Without, five
+// (102 registers): stored triangles ran 14 % slower at four.
+template <bool CostlyLeaves>
+constexpr int kRenderBlocksPerSm = CostlyLeaves ? 4 : 5;
 
 /// One thread per pixel: adds `samples` to the film, in sample order as on the CPU.
-/// One kernel per scene layout, so that each holds only the traversal it runs.
-template <SceneLayout Layout>
-__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<Layout>)
+template <bool CostlyLeaves>
+__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<CostlyLeaves>)
     renderKernel(SceneView scene, Camera camera, RenderSettings settings, SampleRange samples, FilmView film,
                  unsigned long long* rayCount) {
+    scene.costlyLeaves = CostlyLeaves;   // a constant from here on
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     uint32_t rays = 0;
     if (x < settings.width && y < settings.height)
-        rays = addPathSamples<Layout>(scene, camera, settings, x, y, samples, film);
+        rays = addPathSamples(scene, camera, settings, x, y, samples, film);
     // One atomic per warp.
     unsigned long long total = rays;
     for (int offset = 16; offset > 0; offset /= 2) total += __shfl_down_sync(0xffffffffu, total, offset);
@@ -53,14 +55,18 @@ __global__ void __launch_bounds__(kTileX * kTileY) aovKernel(SceneView scene, Ca
     if (x < settings.width && y < settings.height) addAovSamples(scene, camera, settings, x, y, samples, film);
 }
 
+template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kTraceBlock) closestKernel(SceneView scene, const Ray* rays, SurfaceHit* hits,
                                                             uint32_t count) {
+    scene.costlyLeaves = CostlyLeaves;
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < count) hits[i] = intersectScene(scene, rays[i]);
 }
 
+template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kTraceBlock) occludedKernel(SceneView scene, const Ray* rays, uint8_t* blocked,
                                                              uint32_t count) {
+    scene.costlyLeaves = CostlyLeaves;
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < count) blocked[i] = occludedScene(scene, rays[i]) ? 1 : 0;
 }
@@ -131,7 +137,7 @@ GpuInfo probeGpu() {
     info.multiprocessors = prop.multiProcessorCount;
     // The fat binary holds code for URBIS_CUDA_ARCHITECTURES only: ask whether a kernel loads here.
     cudaFuncAttributes attributes{};
-    status = cudaFuncGetAttributes(&attributes, renderKernel<SceneLayout::Mixed>);
+    status = cudaFuncGetAttributes(&attributes, renderKernel<true>);
     if (status != cudaSuccess) {
         info.reason = "CUDA device " + info.name + " (sm_" + std::to_string(prop.major) + std::to_string(prop.minor) +
                       ") cannot run this build's kernels (" + cudaGetErrorString(status) +
@@ -176,10 +182,10 @@ struct GpuScene::Impl {
         dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
         const SceneView view = scene.view();
         const FilmView target = filmView();
-        if (view.primRefs)
-            renderKernel<SceneLayout::Mixed><<<grid, block>>>(view, camera, settings, samples, target, rayCount.data());
+        if (view.costlyLeaves)
+            renderKernel<true><<<grid, block>>>(view, camera, settings, samples, target, rayCount.data());
         else
-            renderKernel<SceneLayout::Triangles><<<grid, block>>>(view, camera, settings, samples, target, rayCount.data());
+            renderKernel<false><<<grid, block>>>(view, camera, settings, samples, target, rayCount.data());
         checkLaunch("renderKernel");
         if (!target.hasAovs()) return;
         aovKernel<<<grid, block>>>(view, camera, settings, samples, target);
@@ -192,11 +198,15 @@ struct GpuScene::Impl {
         if (n == 0) return;
         if (shadow) {
             blocked.resize(n);
-            occludedKernel<<<blocksFor(n), kTraceBlock>>>(scene.view(), rays.data(), blocked.data(), n);
+            const SceneView view = scene.view();
+            if (view.costlyLeaves) occludedKernel<true><<<blocksFor(n), kTraceBlock>>>(view, rays.data(), blocked.data(), n);
+            else occludedKernel<false><<<blocksFor(n), kTraceBlock>>>(view, rays.data(), blocked.data(), n);
             checkLaunch("occludedKernel");
         } else {
             hits.resize(n);
-            closestKernel<<<blocksFor(n), kTraceBlock>>>(scene.view(), rays.data(), hits.data(), n);
+            const SceneView view = scene.view();
+            if (view.costlyLeaves) closestKernel<true><<<blocksFor(n), kTraceBlock>>>(view, rays.data(), hits.data(), n);
+            else closestKernel<false><<<blocksFor(n), kTraceBlock>>>(view, rays.data(), hits.data(), n);
             checkLaunch("closestKernel");
         }
     }
@@ -308,12 +318,7 @@ std::vector<float> GpuScene::timeRender(const Camera& camera, const RenderSettin
 GpuMemory GpuScene::memory() const {
     const Impl& m = *impl_;
     GpuMemory out;
-    out.nodes = m.scene.nodes.bytes();
-    out.triangles = m.scene.triangles.bytes();
-    out.triangleInfo = m.scene.triangleInfo.bytes();
-    out.primRefs = m.scene.primRefs.bytes();
-    out.walls = m.scene.walls.bytes();
-    out.materials = m.scene.materials.bytes();
+    out.scene = m.scene.memory();
     out.film = m.filmBytes();
     out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes();
     return out;

@@ -31,10 +31,11 @@ struct GpuInfo {
 /// Probes device 0. Never throws; a missing driver or device is reported in `reason`.
 GpuInfo probeGpu();
 
-/// Device memory held by a GpuScene, by kind (bytes).
+/// Device memory held by a GpuScene (bytes): the scene's arrays, the film and the ray buffers.
 struct GpuMemory {
-    size_t nodes = 0, triangles = 0, triangleInfo = 0, primRefs = 0, walls = 0, materials = 0, film = 0, rays = 0;
-    size_t total() const { return nodes + triangles + triangleInfo + primRefs + walls + materials + film + rays; }
+    SceneMemory scene;
+    size_t film = 0, rays = 0;
+    size_t total() const { return scene.total() + film + rays; }
 };
 
 /// A Scene mirrored on the GPU (flat POD arrays, as they are on the host), with the kernels

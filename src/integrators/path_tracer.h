@@ -26,8 +26,6 @@ URBIS_HD inline Vec3f offsetRayOrigin(Vec3f p, Vec3f facingNormal) {
 }
 
 /// Traces the path of sample `sampleIndex` through pixel (px, py); pure function of its arguments.
-/// `Layout`: see traceScene.
-template <SceneLayout Layout = SceneLayout::Any>
 URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
                                      uint32_t px, uint32_t py, uint32_t sampleIndex) {
     SampleStream rng{settings.seed, py * settings.width + px, sampleIndex};
@@ -44,7 +42,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
     Vec3f sunlight;                // what the pending shadow ray adds if nothing blocks it
     bool shadowPending = false, pathEnds = false;
     for (uint32_t depth = 0;;) {
-        const SurfaceHit hit = traceScene<Layout>(scene, shadowPending ? shadow : ray, shadowPending);
+        const SurfaceHit hit = traceScene(scene, shadowPending ? shadow : ray, shadowPending);
         ++out.rays;
         if (shadowPending) {
             if (!hit.valid()) out.radiance += sunlight;

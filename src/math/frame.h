@@ -1,7 +1,9 @@
 // Orthonormal frames around a normal (host+device).
 #pragma once
 
-#include "math/kernel_math.h"
+#include "math/vec.h"
+
+#include <cmath>
 
 namespace urbis {
 
@@ -12,13 +14,12 @@ struct Frame {
     /// Duff et al. 2017, "Building an Orthonormal Basis, Revisited" (branchless, no singularity).
     URBIS_HD static Frame fromZ(Vec3f n) {
         float sign = copysignf(1.0f, n.z);
-        float a = approxDivide(-1.0f, sign + n.z);
+        float a = -1.0f / (sign + n.z);
         float b = n.x * n.y * a;
-        return {Vec3f{fusedMulAdd(sign * n.x * n.x, a, 1.0f), sign * b, -sign * n.x},
-                Vec3f{b, fusedMulAdd(n.y * n.y, a, sign), -n.y}, n};
+        return {Vec3f{sign * n.x * n.x * a + 1.0f, sign * b, -sign * n.x}, Vec3f{b, n.y * n.y * a + sign, -n.y}, n};
     }
     /// Local (frame) coordinates to world.
-    URBIS_HD Vec3f toWorld(Vec3f v) const { return fusedMulAdd(z, v.z, fusedMulAdd(y, v.y, x * v.x)); }
+    URBIS_HD Vec3f toWorld(Vec3f v) const { return x * v.x + y * v.y + z * v.z; }
 };
 
 } // namespace urbis

@@ -31,6 +31,11 @@ URBIS_HD inline Vec3f& operator*=(Vec3f& a, Vec3f b) { return a = a * b; }
 URBIS_HD inline Vec3f& operator*=(Vec3f& a, float s) { return a = a * s; }
 
 URBIS_HD inline float dot(Vec3f a, Vec3f b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+/// dot(a, b) in the same order with every product and sum rounded apart (urbis.h's exact operations):
+/// for code that decides hits.
+URBIS_HD inline float exactDot(Vec3f a, Vec3f b) {
+    return exactAdd(exactAdd(exactMul(a.x, b.x), exactMul(a.y, b.y)), exactMul(a.z, b.z));
+}
 URBIS_HD inline Vec3f cross(Vec3f a, Vec3f b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }

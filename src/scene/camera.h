@@ -1,7 +1,6 @@
 // A pinhole camera (host+device POD). World: x east, y up, z south; metres.
 #pragma once
 
-#include "math/kernel_math.h"
 #include "math/ray.h"
 
 namespace urbis {
@@ -16,11 +15,11 @@ struct Camera {
 
     /// The ray through film position (sx, sy) in [0,1)^2, sx to the right, sy downwards.
     URBIS_HD Ray generateRay(float sx, float sy) const {
-        float px = fusedMulAdd(2.0f, sx, -1.0f) * tanHalfFovY * aspect;
-        float py = fusedMulAdd(-2.0f, sy, 1.0f) * tanHalfFovY;
+        float px = (2.0f * sx - 1.0f) * tanHalfFovY * aspect;
+        float py = (-2.0f * sy + 1.0f) * tanHalfFovY;
         Ray ray;
         ray.origin = position;
-        ray.dir = approxNormalize(fusedMulAdd(up, py, fusedMulAdd(right, px, forward)));
+        ray.dir = normalize(up * py + (right * px + forward));
         return ray;
     }
 };

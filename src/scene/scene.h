@@ -1,55 +1,61 @@
-// The host-side scene: flat arrays in BVH leaf order, the BVH itself, lights, and what it all costs.
+// The host-side scene: the arrays of scene_arrays.h (each kind's records in BVH leaf order), the BVH
+// itself, lights, and what it all costs.
 #pragma once
 
 #include "accel/bvh_build.h"
-#include "citygen/triangle_mesh.h"
 #include "scene/scene_view.h"
+#include "scene/triangle_mesh.h"
+#include "scene/wall_tiles.h"
 
+#include <cstddef>
 #include <vector>
 
 namespace urbis {
 
-/// Bytes the scene holds, by kind.
+/// Bytes of each array of a scene (scene_arrays.h), host or device.
 struct SceneMemory {
-    size_t triangles = 0, triangleInfo = 0, walls = 0, primRefs = 0, materials = 0, bvh = 0;
-    size_t total() const { return triangles + triangleInfo + walls + primRefs + materials + bvh; }
+#define URBIS_MEMORY_MEMBER(Type, name, key) size_t name = 0;
+    URBIS_SCENE_ARRAYS(URBIS_MEMORY_MEMBER)
+#undef URBIS_MEMORY_MEMBER
+
+    /// f(const char* statsKey, size_t bytes) for every array.
+    template <typename F>
+    void forEach(F&& f) const {
+#define URBIS_MEMORY_EACH(Type, name, key) f(key, name);
+        URBIS_SCENE_ARRAYS(URBIS_MEMORY_EACH)
+#undef URBIS_MEMORY_EACH
+    }
+    size_t total() const {
+        size_t sum = 0;
+        forEach([&](const char*, size_t bytes) { sum += bytes; });
+        return sum;
+    }
 };
 
-/// How walls are split into BVH primitives: tiles of at most this many slots x floors (0: no limit).
-/// The default keeps whole walls: on the CPU, tiles measured slower (docs/facades.md).
-struct WallTileSize {
-    int slots = 0, floors = 0;
-};
-
-/// `walls` split into tiles of at most `size` cells (WallRecord::slot0): each tile a copy of its
-/// wall's record with a sub-range of its grid; together they give the whole wall's hits, while each
-/// has a box the size of its cells, so the BVH culls what one long, deep wall box would not.
-/// A wall's slots (floors) are cut into equal runs as near to each other in length as they can be.
-std::vector<WallRecord> splitWallsIntoTiles(const std::vector<WallRecord>& walls, WallTileSize size);
-
-/// World bounds of a wall record's tile: its extent in u and v (WallRecord::tileU0 ...) and its
-/// slab from w = -depthBack to w = depthFront; widened where it meets another tile of its wall.
-Bounds3f wallTileBounds(const WallRecord& wall);
-
-/// Every array here is mirrored to the device as it is: nodes, triangles, info, primRefs, walls, materials.
+/// Every array here is mirrored to the device as it is (DeviceScene).
 struct Scene {
-    std::vector<BvhNode> nodes;
-    std::vector<Triangle> triangles;      ///< in the order the BVH leaves reach them
-    std::vector<TriangleInfo> info;       ///< same order as triangles
-    std::vector<uint32_t> primRefs;       ///< per leaf slot, a PrimRef; empty when there are only triangles
-    std::vector<WallRecord> walls;        ///< wall tiles, in the order the BVH leaves reach them
-    std::vector<Material> materials;
-    GroundPlane ground;
+#define URBIS_SCENE_MEMBER(Type, name, key) std::vector<Type> name;
+    URBIS_SCENE_ARRAYS(URBIS_SCENE_MEMBER)
+#undef URBIS_SCENE_MEMBER
     Sun sun;
     Sky sky;
 
-    /// Builds one BVH over the triangles of `mesh` and the tiles of the procedural `walls`
-    /// (splitWallsIntoTiles), and stores both in leaf order. Without walls every leaf slot is a
-    /// triangle and primRefs stays empty.
+    /// Builds one BVH over the triangles of `mesh`, the tiles of the procedural `walls`
+    /// (splitWallsIntoTiles) and the `grounds` (hung from its root), and stores each kind's records
+    /// in leaf order, the slots of each kind after those of the kinds before it (SceneView::kindEnd).
     static Scene build(const TriangleMesh& mesh, std::vector<Material> materials,
-                       const std::vector<WallRecord>& walls = {}, WallTileSize tileSize = {});
+                       const std::vector<WallRecord>& walls = {}, WallTileSize tileSize = {},
+                       const std::vector<GroundRecord>& grounds = {});
     SceneView view() const;
     SceneMemory memory() const;
+
+    /// f(const char* statsKey, const std::vector<T>& array) for every array.
+    template <typename F>
+    void forEachArray(F&& f) const {
+#define URBIS_SCENE_EACH(Type, name, key) f(key, name);
+        URBIS_SCENE_ARRAYS(URBIS_SCENE_EACH)
+#undef URBIS_SCENE_EACH
+    }
 };
 
 } // namespace urbis

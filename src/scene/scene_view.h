@@ -1,42 +1,46 @@
-// What per-ray code sees of a scene: flat POD arrays and small records, the same on both backends.
+// What per-ray code sees of a scene: every array of scene_arrays.h as a view, and small records by
+// value; the same on both backends.
 #pragma once
 
-#include "geometry/ground_plane.h"
-#include "geometry/triangle_scene.h"
-#include "geometry/wall_record.h"
 #include "lights/sky.h"
 #include "lights/sun.h"
-#include "scene/material.h"
-#include "scene/triangle.h"
+#include "scene/scene_arrays.h"
 
 namespace urbis {
 
 struct SceneView {
-    TriangleSceneView geometry;          ///< BVH nodes and triangles (in the order their leaves reach them)
-    const TriangleInfo* triangleInfo;    ///< per triangle, same order as geometry.triangles
-    /// Per BVH leaf slot, a PrimRef (kind + index); null when every primitive is a triangle, and
-    /// then a leaf slot is the triangle's index.
-    const uint32_t* primRefs;
-    const WallRecord* walls;             ///< procedural walls, in the order their leaves reach them
-    const Material* materials;
-    GroundPlane ground;
+#define URBIS_VIEW_MEMBER(Type, name, key) ArrayView<Type> name;
+    URBIS_SCENE_ARRAYS(URBIS_VIEW_MEMBER)
+#undef URBIS_VIEW_MEMBER
+    /// The BVH's leaf slots of kind I are [kindEnd[I - 1], kindEnd[I]) (from 0 for kind 0): slot s
+    /// is record s - kindEnd[I - 1] of the kind's array.
+    uint32_t kindEnd[kPrimKindCount] = {};
+    /// Whether any leaf is costly (kBvhCostlyLeaf): the traversal then takes the costly leaves' path.
+    bool costlyLeaves = false;
     Sun sun;
     Sky sky;
+
+    /// The first leaf slot of kind I.
+    URBIS_HD uint32_t kindStart(uint32_t i) const { return i == 0 ? 0u : kindEnd[i - 1]; }
 };
 
-/// The view of a scene's arrays, host vectors or device buffers alike (anything with data() and
-/// size()); an empty primRefs becomes null.
-SceneView makeSceneView(const auto& nodes, const auto& triangles, const auto& triangleInfo, const auto& primRefs,
-                        const auto& walls, const auto& materials, const GroundPlane& ground, const Sun& sun,
-                        const Sky& sky) {
-    return SceneView{TriangleSceneView{nodes.data(), triangles.data(), uint32_t(triangles.size())},
-                     triangleInfo.data(),
-                     primRefs.size() == 0 ? nullptr : primRefs.data(),
-                     walls.data(),
-                     materials.data(),
-                     ground,
-                     sun,
-                     sky};
+/// The view of a scene's arrays, host vectors or device buffers alike (anything with the members of
+/// scene_arrays.h, each with data() and size()).
+SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky) {
+    SceneView view;
+#define URBIS_VIEW_ARRAY(Type, name, key) view.name = {arrays.name.data(), uint32_t(arrays.name.size())};
+    URBIS_SCENE_ARRAYS(URBIS_VIEW_ARRAY)
+#undef URBIS_VIEW_ARRAY
+    uint32_t end = 0;
+    forEachPrimKind([&](auto kind) {
+        const uint32_t count = uint32_t(kindArray<typename decltype(kind)::Record>(arrays).size());
+        end += count;
+        view.kindEnd[kind.index] = end;
+        view.costlyLeaves |= kCostlyKind<kind.index> && count > 0;
+    });
+    view.sun = sun;
+    view.sky = sky;
+    return view;
 }
 
 } // namespace urbis

@@ -1,0 +1,44 @@
+// The one description of a scene's arrays: (record type, member name, stats key) per line. It makes
+// the members of Scene (host vectors), SceneView (pointers), DeviceScene (device buffers) and
+// SceneMemory (bytes), and their forEach; so a new array is one line here.
+#pragma once
+
+#include "accel/bvh_node.h"
+#include "scene/material.h"
+#include "scene/prim_kinds.h"
+
+#include <cstdint>
+
+// X(Type, member, "stats key"): in leaf order where the BVH's leaves reach them.
+#define URBIS_SCENE_ARRAYS(X)                          \
+    X(BvhNode, nodes, "bvh")                           \
+    X(Triangle, triangles, "triangles")                \
+    X(TriangleInfo, triangleInfo, "triangle_info")     \
+    X(WallRecord, walls, "walls")                      \
+    X(GroundRecord, grounds, "grounds")                \
+    X(Material, materials, "materials")
+
+namespace urbis {
+
+/// A non-owning view of one array (host+device POD).
+template <typename T>
+struct ArrayView {
+    const T* data = nullptr;
+    uint32_t size = 0;
+
+    URBIS_HD const T& operator[](uint32_t i) const { return data[i]; }
+};
+
+/// The array of kind Record's records among `arrays` (a Scene, a SceneView or a DeviceScene): one
+/// line per kind.
+template <typename Record>
+URBIS_HD auto& kindArray(auto& arrays) {
+    if constexpr (std::is_same_v<Record, Triangle>) return arrays.triangles;
+    else if constexpr (std::is_same_v<Record, WallRecord>) return arrays.walls;
+    else {
+        static_assert(std::is_same_v<Record, GroundRecord>, "a kind of PrimKinds without its array here");
+        return arrays.grounds;
+    }
+}
+
+} // namespace urbis
