@@ -1,6 +1,7 @@
 // The BVH over a real imported city against brute force: 100k random rays, same triangle and distance.
 #include "citygen/city_mesher.h"
 #include "math/rng.h"
+#include "math/sampling.h"
 #include "osm/osm_import.h"
 #include "scene/scene.h"
 

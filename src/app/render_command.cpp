@@ -9,6 +9,7 @@
 #include "cpu/cpu_renderer.h"
 #include "io/atomic_file.h"
 #include "layout/city_layout.h"
+#include "lights/light_build.h"
 #include "model/input_error.h"
 #include "osm/geo_projection.h"
 #include "osm/osm_import.h"
@@ -192,6 +193,7 @@ PreparedScene prepareScene(const RenderOptions& o, size_t memoryLimit) {
     p.scene = Scene::build(p.mesh.mesh, p.mesh.materials, p.mesh.walls, tileSize);
     p.scene.ground = GroundPlane{0.0f, p.mesh.groundMaterial, true};
     p.scene.sun = sun;
+    buildLights(p.scene);
     p.secondsBvh = secondsSince(t0);
 
     p.camera = chooseCamera(o, p.city, p.mesh);

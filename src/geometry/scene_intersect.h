@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geometry/wall_intersect.h"
+#include "math/kernel_math.h"
 #include "scene/prim_ref.h"
 #include "scene/scene_view.h"
 #include "scene/surface_part.h"

@@ -14,6 +14,13 @@ struct DeviceScene {
     DeviceBuffer<uint32_t> primRefs;
     DeviceBuffer<WallRecord> walls;
     DeviceBuffer<Material> materials;
+    DeviceBuffer<LightRecord> lightRecords;
+    DeviceBuffer<float> lightPower;
+    DeviceBuffer<EmissiveSurface> emissiveSurfaces;
+    DeviceBuffer<TriangleLight> triangleLights;
+    DeviceBuffer<uint32_t> lightOfMaterial;
+    DeviceBuffer<float> skyTable;
+    SceneLights lights;  ///< the host arrays' sizes and scalars (the view's counts); arrays not used on the device
     GroundPlane ground;
     Sun sun;
     Sky sky;
@@ -29,6 +36,12 @@ struct DeviceScene {
         f(scene.primRefs, primRefs);
         f(scene.walls, walls);
         f(scene.materials, materials);
+        f(scene.lights.records, lightRecords);
+        f(scene.lights.powerTable, lightPower);
+        f(scene.lights.surfaces, emissiveSurfaces);
+        f(scene.lights.triangles, triangleLights);
+        f(scene.lights.lightOfMaterial, lightOfMaterial);
+        f(scene.lights.skyTable, skyTable);
     }
 
     /// Device bytes the arrays of `scene` take.
@@ -45,11 +58,13 @@ struct DeviceScene {
         ground = scene.ground;
         sun = scene.sun;
         sky = scene.sky;
+        lights = scene.lights;
     }
 
     /// What kernels read: the same SceneView the CPU backend gets, over device pointers.
     SceneView view() const {
-        return makeSceneView(nodes, triangles, triangleInfo, primRefs, walls, materials, ground, sun, sky);
+        return makeSceneView(nodes, triangles, triangleInfo, primRefs, walls, materials, ground, sun, sky,
+                             lights.view(lightRecords, lightPower, emissiveSurfaces, triangleLights, lightOfMaterial, skyTable));
     }
 };
 

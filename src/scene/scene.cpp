@@ -97,7 +97,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
 }
 
 SceneView Scene::view() const {
-    return makeSceneView(nodes, triangles, info, primRefs, walls, materials, ground, sun, sky);
+    return makeSceneView(nodes, triangles, info, primRefs, walls, materials, ground, sun, sky, lights.view());
 }
 
 SceneMemory Scene::memory() const {

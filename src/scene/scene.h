@@ -3,6 +3,7 @@
 
 #include "accel/bvh_build.h"
 #include "citygen/triangle_mesh.h"
+#include "scene/scene_lights.h"
 #include "scene/scene_view.h"
 
 #include <vector>
@@ -42,6 +43,7 @@ struct Scene {
     GroundPlane ground;
     Sun sun;
     Sky sky;
+    SceneLights lights;                   ///< built from the rest by buildLights (lights/light_build.h)
 
     /// Builds one BVH over the triangles of `mesh` and the tiles of the procedural `walls`
     /// (splitWallsIntoTiles), and stores both in leaf order. Without walls every leaf slot is a

@@ -4,9 +4,10 @@
 #include "geometry/ground_plane.h"
 #include "geometry/triangle_scene.h"
 #include "geometry/wall_record.h"
-#include "lights/sky.h"
-#include "lights/sun.h"
+#include "scene/light_records.h"
 #include "scene/material.h"
+#include "scene/sky.h"
+#include "scene/sun.h"
 #include "scene/triangle.h"
 
 namespace urbis {
@@ -22,13 +23,14 @@ struct SceneView {
     GroundPlane ground;
     Sun sun;
     Sky sky;
+    LightsView lights;                   ///< the light sampler's list and tables (empty: sun and sky)
 };
 
 /// The view of a scene's arrays, host vectors or device buffers alike (anything with data() and
 /// size()); an empty primRefs becomes null.
 SceneView makeSceneView(const auto& nodes, const auto& triangles, const auto& triangleInfo, const auto& primRefs,
                         const auto& walls, const auto& materials, const GroundPlane& ground, const Sun& sun,
-                        const Sky& sky) {
+                        const Sky& sky, const LightsView& lights = {}) {
     return SceneView{TriangleSceneView{nodes.data(), triangles.data(), uint32_t(triangles.size())},
                      triangleInfo.data(),
                      primRefs.size() == 0 ? nullptr : primRefs.data(),
@@ -36,7 +38,8 @@ SceneView makeSceneView(const auto& nodes, const auto& triangles, const auto& tr
                      materials.data(),
                      ground,
                      sun,
-                     sky};
+                     sky,
+                     lights};
 }
 
 } // namespace urbis

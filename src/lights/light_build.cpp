@@ -1,0 +1,148 @@
+#include "lights/light_build.h"
+
+#include "lights/sky_light.h"
+#include "lights/sun_light.h"
+
+#include <map>
+
+namespace urbis {
+
+namespace {
+
+/// Radius of a sphere around everything the scene holds (1 m for an empty scene): the infinite
+/// lights' power is their radiance through a disk of that radius (pbrt-v4 DistantLight::Phi).
+float sceneRadius(const Scene& scene) {
+    Bounds3f bounds;
+    for (const Triangle& t : scene.triangles) {
+        bounds.extend(t.p0);
+        bounds.extend(t.p1);
+        bounds.extend(t.p2);
+    }
+    for (const WallRecord& wall : scene.walls) bounds.extend(wallTileBounds(wall));
+    return bounds.empty() ? 1.0f : fmaxf(1.0f, 0.5f * length(bounds.extent()));
+}
+
+/// Materials that some primitive other than a triangle can show: their emission is not light-sampled.
+std::vector<bool> materialsOutsideTriangles(const Scene& scene) {
+    std::vector<bool> outside(scene.materials.size(), false);
+    auto mark = [&](uint32_t m) {
+        if (m < outside.size()) outside[m] = true;
+    };
+    for (const WallRecord& wall : scene.walls) {
+        mark(wall.wallMaterial);
+        for (uint32_t i = 0; i < uint32_t(FacadeMaterial::Count); ++i) mark(wall.facadeMaterials + i);
+    }
+    if (scene.ground.enabled) mark(scene.ground.material);
+    return outside;
+}
+
+/// The sky's luminance table over the lat-long map (times sin theta, so that sampling it follows
+/// radiance per solid angle), and the integral of luminance over the sphere. A floor of 1 % of the
+/// mean keeps the pdf positive wherever the sky might shine.
+std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, double& integral) {
+    std::vector<float> func(size_t(nu) * nv);
+    integral = 0;
+    const double cell = (2.0 * kPi / nu) * (kPi / nv);
+    for (uint32_t v = 0; v < nv; ++v)
+        for (uint32_t u = 0; u < nu; ++u) {
+            const Vec2f uv{(float(u) + 0.5f) / float(nu), (float(v) + 0.5f) / float(nv)};
+            const float lum = luminance(skyRadiance(sky, skyDirectionFromUv(uv)));
+            const float sinTheta = std::sin(kPi * uv.y);
+            func[size_t(v) * nu + u] = lum * sinTheta;
+            integral += double(lum) * sinTheta * cell;
+        }
+    double mean = 0;
+    for (float f : func) mean += f;
+    mean /= double(func.size());
+    for (uint32_t v = 0; v < nv; ++v) {
+        const float sinTheta = std::sin(kPi * (float(v) + 0.5f) / float(nv));
+        for (uint32_t u = 0; u < nu; ++u) func[size_t(v) * nu + u] += float(0.01 * mean) * sinTheta;
+    }
+    return func;
+}
+
+/// One EmissiveSurface per emitting material of the triangles (in material order).
+void addEmissiveSurfaces(const Scene& scene, SceneLights& lights, float& area) {
+    const std::vector<bool> outside = materialsOutsideTriangles(scene);
+    std::map<uint32_t, std::vector<uint32_t>> trianglesOf;
+    for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
+        const uint32_t m = scene.info[i].material;
+        if (m < scene.materials.size() && !outside[m] && maxComponent(scene.materials[m].emission) > 0.0f)
+            trianglesOf[m].push_back(i);
+    }
+    lights.lightOfMaterial.assign(scene.materials.size(), kNoLight);
+    area = 0;
+    for (const auto& [material, list] : trianglesOf) {
+        EmissiveSurface surface{scene.materials[material].emission, uint32_t(lights.triangles.size()), 0, 0.0f};
+        std::vector<double> areas;
+        double total = 0;
+        for (uint32_t i : list) {
+            const Triangle& t = scene.triangles[i];
+            const double a = 0.5 * double(length(cross(t.p1 - t.p0, t.p2 - t.p0)));
+            if (!(a > 0)) continue;
+            areas.push_back(a);
+            total += a;
+            lights.triangles.push_back(TriangleLight{t.p0, t.p1, t.p2, 0.0f});
+        }
+        if (areas.empty()) continue;
+        double running = 0;
+        for (size_t k = 0; k < areas.size(); ++k) {
+            running += areas[k];
+            lights.triangles[surface.firstTriangle + k].cdf = k + 1 == areas.size() ? 1.0f : float(running / total);
+        }
+        surface.triangleCount = uint32_t(areas.size());
+        surface.area = float(total);
+        lights.lightOfMaterial[material] = uint32_t(lights.records.size());
+        // Flux of a two-sided Lambertian emitter: 2 pi A L.
+        lights.records.push_back({LightKind::EmissiveSurface, uint32_t(lights.surfaces.size()),
+                                  float(2.0 * kPi * total * luminance(surface.emission))});
+        lights.surfaces.push_back(surface);
+        area += surface.area;
+    }
+}
+
+} // namespace
+
+void buildLights(Scene& scene, const LightBuildOptions& options) {
+    SceneLights lights;
+    const double disk = double(kPi) * double(sceneRadius(scene)) * double(sceneRadius(scene));
+    if (options.sun && sunEnabled(scene.sun)) {
+        lights.sunLight = uint32_t(lights.records.size());
+        const double solidAngle = 1.0 / double(sunPdf(scene.sun));
+        lights.records.push_back({LightKind::Sun, 0, float(disk * luminance(scene.sun.radiance) * solidAngle)});
+    }
+    if (options.sky && options.skyWidth > 0 && options.skyHeight > 0) {
+        double integral = 0;
+        std::vector<float> func = skyLuminanceTable(scene.sky, options.skyWidth, options.skyHeight, integral);
+        if (integral > 0) {
+            lights.skyTable = buildPiecewiseConstant2D(func, options.skyWidth, options.skyHeight);
+            lights.skyNu = options.skyWidth;
+            lights.skyNv = options.skyHeight;
+            lights.skyLight = uint32_t(lights.records.size());
+            lights.records.push_back({LightKind::Sky, 0, float(disk * integral)});
+        }
+    }
+    float area = 0;
+    if (options.surfaces) addEmissiveSurfaces(scene, lights, area);
+    else lights.lightOfMaterial.assign(scene.materials.size(), kNoLight);
+    std::vector<float> power;
+    for (const LightRecord& light : lights.records) power.push_back(light.power);
+    lights.powerTable = buildPiecewiseConstant1D(power);
+    lights.built = true;
+    scene.lights = std::move(lights);
+}
+
+Bounds3f lightBounds(const SceneLights& lights, const LightRecord& light) {
+    Bounds3f bounds;
+    if (light.kind != LightKind::EmissiveSurface) return bounds;
+    const EmissiveSurface& surface = lights.surfaces[light.index];
+    for (uint32_t i = 0; i < surface.triangleCount; ++i) {
+        const TriangleLight& t = lights.triangles[surface.firstTriangle + i];
+        bounds.extend(t.p0);
+        bounds.extend(t.p1);
+        bounds.extend(t.p2);
+    }
+    return bounds;
+}
+
+} // namespace urbis
