@@ -56,9 +56,12 @@ TEST(LightsChi2, SkyFromItsTable) {
     ASSERT_FALSE(view.lights.skyTable.empty());
     const LightRecord sky = lightRecord(view.lights, view.lights.skyLight);
     chi2::DirectionBins bins;
-    bins.frame = Frame::fromZ(Vec3f{0, 1, 0});
-    bins.thetaBins = 24;
-    bins.phiBins = 24;
+    // Bins aligned with the table's cells (64 rows in theta, 128 columns in phi) about the map's
+    // own axis and origin of phi, so that the midpoint rule integrates the pdf exactly.
+    bins.frame = Frame{Vec3f{1, 0, 0}, Vec3f{0, 0, 1}, Vec3f{0, 1, 0}};
+    bins.uniformInTheta = true;
+    bins.thetaBins = 32;
+    bins.phiBins = 32;
     uint32_t mismatches = 0;  // a direction rounded back across a cell's edge reads its neighbour's pdf
     expectFits(
         [&](float u0, float u1, float u2, Vec3f& d) {
@@ -82,6 +85,7 @@ TEST(LightsChi2, SunDisk) {
     chi2::DirectionBins bins;
     bins.frame = Frame::fromZ(scene.sun.direction);
     bins.cosMin = scene.sun.cosHalfAngle;
+    bins.smooth = false;
     expectFits(
         [&](float u0, float u1, float u2, Vec3f& d) {
             LightSample s;
@@ -109,6 +113,7 @@ TEST(LightsChi2, EmissiveSurfaces) {
         bins.frame = Frame::fromZ(normalize(box.centre() - from));
         bins.cosMin = material == 1 ? 0.2 : 0.5;
         bins.subdivisions = 32;
+        bins.smooth = false;
         auto pdf = [&](Vec3f d) {
             double sum = 0;
             for (uint32_t i = 0; i < surface.triangleCount; ++i) {
@@ -159,4 +164,42 @@ TEST(LightsChi2, LightSamplerChoice) {
     const uint32_t bright = view.lights.lightOfMaterial[3], dim = view.lights.lightOfMaterial[2];
     EXPECT_GT(lightSelectionPmf(view.lights, LightSamplerKind::Power, bright),
               lightSelectionPmf(view.lights, LightSamplerKind::Power, dim));
+}
+
+// Each light's pdf integrates to one over the directions it covers (the sky's over the sphere,
+// exactly on bins aligned with its table; the sun's over its disk; a surface's from a point).
+TEST(LightsPdf, IntegratesToOne) {
+    Scene scene = lightsScene();
+    const SceneView view = scene.view();
+    const LightRecord sky = lightRecord(view.lights, view.lights.skyLight), sun = lightRecord(view.lights, view.lights.sunLight);
+    chi2::DirectionBins sphere;
+    sphere.frame = Frame{Vec3f{1, 0, 0}, Vec3f{0, 0, 1}, Vec3f{0, 1, 0}};
+    sphere.uniformInTheta = true;
+    sphere.thetaBins = 64;
+    sphere.phiBins = 128;
+    sphere.subdivisions = 2;
+    EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sky, d, 0, 0)); }, sphere), 1.0, 1e-4);
+    chi2::DirectionBins disk;
+    disk.frame = Frame::fromZ(scene.sun.direction);
+    disk.cosMin = scene.sun.cosHalfAngle;
+    disk.smooth = false;
+    EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sun, d, 0, 0)); }, disk), 1.0, 1e-3);
+    const LightRecord bright = lightRecord(view.lights, view.lights.lightOfMaterial[3]);
+    const TriangleLight* triangles = view.lights.triangles + view.lights.surfaces[bright.index].firstTriangle;
+    const Vec3f from{1.0f, -1.0f, 0.5f};
+    chi2::DirectionBins towards;
+    towards.frame = Frame::fromZ(normalize(lightBounds(scene.lights, bright).centre() - from));
+    towards.cosMin = 0.5;
+    towards.thetaBins = towards.phiBins = 64;
+    towards.smooth = false;
+    auto pdf = [&](Vec3f d) {
+        double sum = 0;
+        for (int i = 0; i < 2; ++i) {
+            const float distance = hitDistance(triangles[i], from, d);
+            const Vec3f n = normalize(cross(triangles[i].p1 - triangles[i].p0, triangles[i].p2 - triangles[i].p0));
+            if (distance > 0) sum += double(lightPdf(view, bright, d, distance, dot(n, d)));
+        }
+        return sum;
+    };
+    EXPECT_NEAR(chi2::integratePdf(pdf, towards), 1.0, 5e-3);
 }

@@ -36,9 +36,20 @@ TEST(SamplingChi2, CosineHemisphere) {
                [](Vec3f d) { return double(cosineHemispherePdf(d.z)); }, bins, 1);
 }
 
+// The test itself: a sampler tested against another's pdf fails.
+TEST(SamplingChi2, RejectsAWrongPdf) {
+    chi2::DirectionBins bins;
+    bins.cosMin = 0;
+    const chi2::Outcome outcome = chi2::testDirections(
+        [](float, float u1, float u2, Vec3f& d) { return d = sampleCosineHemisphere(u1, u2), true; },
+        [](Vec3f d) { return double(phongLobePdf(d.z, 1.3f)); }, bins, kSamples, 30);
+    EXPECT_LT(outcome.pValue, 1e-6) << outcome.message;
+}
+
 TEST(SamplingChi2, UniformCone) {
     chi2::DirectionBins bins;
     bins.cosMin = 0.8;
+    bins.smooth = false;  // the pdf's edge is the domain's
     expectFits([](float, float u1, float u2, Vec3f& d) { return d = sampleUniformCone(u1, u2, 0.8f), true; },
                [](Vec3f d) { return d.z >= 0.8f ? double(uniformConePdf(0.8f)) : 0.0; }, bins, 2);
 }
@@ -51,6 +62,7 @@ TEST(SamplingChi2, UniformSphere) {
 
 TEST(SamplingChi2, PhongLobe) {
     for (float exponent : {1.0f, 12.0f, 80.0f}) {
+        SCOPED_TRACE(exponent);
         chi2::DirectionBins bins;
         bins.cosMin = exponent > 50 ? 0.9 : 0.0;
         expectFits([&](float, float u1, float u2, Vec3f& d) { return d = samplePhongLobe(u1, u2, exponent), true; },
