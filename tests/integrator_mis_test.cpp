@@ -25,7 +25,7 @@ const Strategy kStrategies[] = {
     {"MIS, power sampler", 1, LightSamplerKind::Power, true},
     {"MIS, uniform sampler", 1, LightSamplerKind::Uniform, true},
     {"MIS, 3 light samples", 3, LightSamplerKind::Power, true},
-    {"MIS, lights not built (implicit sun and sky)", 1, LightSamplerKind::Power, false},
+    {"lights not built (the sun alone is light-sampled)", 1, LightSamplerKind::Power, false},
 };
 
 Vec3f imageMean(const LinearImage& image) {

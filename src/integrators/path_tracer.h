@@ -55,6 +55,18 @@ URBIS_HD inline float lightSampleWeight(uint32_t lightSamples, float lightPdf, f
     return powerHeuristic(float(lightSamples), lightPdf, 1.0f, bsdfPdf);
 }
 
+/// The shadow ray from a surface point towards a light sample. Towards a point of a surface it is
+/// aimed from the offset origin at that point and stops short of it, so that the emitter does not
+/// block its own light (aimed along the sampled direction, its surface lies at the ray's end only
+/// within rounding, and it would block half of the rays).
+URBIS_HD inline Ray shadowRayTowards(Vec3f position, Vec3f facingNormal, const LightSample& ls) {
+    const Vec3f origin = offsetRayOrigin(position, facingNormal);
+    if (!(ls.distance < 3.0e38f)) return Ray{origin, ls.dir};
+    const Vec3f toTarget = position + ls.dir * ls.distance - origin;
+    const float distance = length(toTarget);
+    return Ray{origin, toTarget / distance, 0.0f, distance * (1.0f - 1e-4f)};
+}
+
 /// One light sample from `vertex`: the shadow ray towards the light and what it adds if nothing
 /// blocks it. Returns false when it adds nothing (then no ray is traced).
 URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSettings& settings, const PathVertex& vertex,
@@ -74,8 +86,7 @@ URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSetting
                             : 1.0f;
     contribution = vertex.throughput * fCos * ls.radiance * (weight / (float(settings.lightSamples) * lightPdf));
     if (!(maxComponent(contribution) > 0.0f)) return false;
-    // Stop short of a sampled surface point, so the emitter itself does not block its own light.
-    shadow = Ray{offsetRayOrigin(vertex.position, vertex.normal), ls.dir, 0.0f, ls.distance * (1.0f - 1e-4f)};
+    shadow = shadowRayTowards(vertex.position, vertex.normal, ls);
     return true;
 }
 

@@ -7,13 +7,13 @@
 
 namespace urbis {
 
-/// Lights in the list; a view not built stands for {sun, sky}.
-URBIS_HD inline uint32_t lightCount(const LightsView& lights) { return lights.built ? lights.count : 2u; }
+/// Lights in the list; a view not built stands for {sun}.
+URBIS_HD inline uint32_t lightCount(const LightsView& lights) { return lights.built ? lights.count : 1u; }
 
 /// The record of light `index` of the list.
 URBIS_HD inline LightRecord lightRecord(const LightsView& lights, uint32_t index) {
     if (lights.built) return lights.records[index];
-    return LightRecord{index == 0 ? LightKind::Sun : LightKind::Sky, 0, 0.0f};
+    return LightRecord{LightKind::Sun, 0, 0.0f};
 }
 
 /// Probability that selectLight picks light `index` (kNoLight: 0).

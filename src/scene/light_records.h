@@ -43,9 +43,9 @@ struct TriangleLight {
 
 constexpr uint32_t kNoLight = 0xffffffffu;
 
-/// What per-ray code sees of the scene's lights. Not built (buildLights was not called) stands for
-/// the list {sun, sky} picked uniformly, with the sky sampled uniformly over the sphere: every
-/// estimate stays unbiased, only noisier.
+/// What per-ray code sees of the scene's lights. Not built (buildLights was not called), it stands
+/// for the list {sun}: the sun is light-sampled, the sky and emitters are found by BSDF sampling
+/// and counted in full (the path tracer's estimator before MIS).
 struct LightsView {
     bool built = false;
     const LightRecord* records = nullptr;
@@ -56,7 +56,7 @@ struct LightsView {
     const uint32_t* lightOfMaterial = nullptr;    ///< per material: its EmissiveSurface's light, or kNoLight
     uint32_t materialCount = 0;
     PiecewiseConstant2DView skyTable;             ///< over (u, v) of the sky's lat-long map (lights/sky_light.h)
-    uint32_t sunLight = 0, skyLight = 1;          ///< their places in records, or kNoLight
+    uint32_t sunLight = 0, skyLight = kNoLight;   ///< their places in records, or kNoLight
 };
 
 } // namespace urbis
