@@ -119,12 +119,15 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
         if (tracingShadow) {
             if (!hit.valid()) out.radiance += shadowContribution;
         } else if (!hit.valid()) {
-            // The sky, and the sun's disk: found by BSDF sampling, weighed against light sampling.
+            // The sky, and the sun's disk: found by BSDF sampling, weighed against light sampling
+            // (their pdfs only where the weight needs them: not for camera rays and specular bounces).
             const Vec3f dir = normalize(ray.dir);
             const LightRecord sky{LightKind::Sky, 0, 0.0f}, sun{LightKind::Sun, 0, 0.0f};
-            const float skyWeight = bsdfFoundWeight(bounce, settings.lightSamples,
-                                                    lightSelectionPmf(lights, settings.lightSampler, lights.skyLight),
-                                                    lightPdf(scene, sky, dir, 0.0f, 0.0f));
+            float skyWeight = 1.0f;
+            if (!bounce.countsInFull && lights.skyLight != kNoLight)
+                skyWeight = bsdfFoundWeight(bounce, settings.lightSamples,
+                                            lightSelectionPmf(lights, settings.lightSampler, lights.skyLight),
+                                            lightPdf(scene, sky, dir, 0.0f, 0.0f));
             out.radiance += throughput * skyRadiance(scene.sky, dir) * skyWeight;
             if (!cameraRay && sunEnabled(scene.sun) && sunContains(scene.sun, dir)) {
                 const float sunWeight = bsdfFoundWeight(bounce, settings.lightSamples,
@@ -140,7 +143,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                 // An emitter found by BSDF sampling: weighed against its light samples where it has any.
                 const uint32_t light = hit.material < lights.materialCount ? lights.lightOfMaterial[hit.material] : kNoLight;
                 float weight = 1.0f;
-                if (light != kNoLight)
+                if (light != kNoLight && !bounce.countsInFull)
                     weight = bsdfFoundWeight(bounce, settings.lightSamples,
                                              lightSelectionPmf(lights, settings.lightSampler, light),
                                              lightPdf(scene, lightRecord(lights, light), dir, hit.t * length(ray.dir),

@@ -41,7 +41,7 @@ URBIS_HD inline Vec3f sampleSkyDirection(const PiecewiseConstant2DView& table, f
     float uvPdf;
     const Vec2f uv = samplePiecewiseConstant2D(table, u1, u2, uvPdf);
     const Vec3f dir = skyDirectionFromUv(uv);
-    const float sinTheta = sinf(kPi * uv.y);
+    const float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - dir.y * dir.y));
     pdf = sinTheta > 0.0f ? uvPdf / (2.0f * kPi * kPi * sinTheta) : 0.0f;
     return dir;
 }
