@@ -203,3 +203,28 @@ TEST(LightsPdf, IntegratesToOne) {
     };
     EXPECT_NEAR(chi2::integratePdf(pdf, towards), 1.0, 5e-3);
 }
+
+// Over an infinite ground plane nothing below the horizon can be seen from above it: the sky's
+// table leaves those directions to BSDF sampling (pdf 0) and integrates to one above.
+TEST(LightsPdf, SkyAboveTheGroundSamplesTheUpperHemisphere) {
+    Scene scene = Scene::build(TriangleMesh{}, {Material{}});
+    scene.ground = GroundPlane{0.0f, 0, true};
+    buildLights(scene);
+    const SceneView view = scene.view();
+    const LightRecord sky = lightRecord(view.lights, view.lights.skyLight);
+    EXPECT_EQ(lightPdf(view, sky, normalize(Vec3f{0.3f, -0.2f, 0.5f}), 0, 0), 0.0f);
+    chi2::DirectionBins upper;
+    upper.frame = Frame{Vec3f{1, 0, 0}, Vec3f{0, 0, 1}, Vec3f{0, 1, 0}};
+    upper.uniformInTheta = true;
+    upper.cosMin = 0;
+    upper.thetaBins = 32;
+    upper.phiBins = 128;
+    upper.subdivisions = 2;
+    EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sky, d, 0, 0)); }, upper), 1.0, 1e-4);
+    SampleStream rng{3, 0, 0};
+    for (int i = 0; i < 1000; ++i) {
+        LightSample s;
+        ASSERT_TRUE(sampleLight(view, sky, Vec3f{}, rng.draw(), rng.draw(), rng.draw(), s));
+        EXPECT_GE(s.dir.y, 0.0f);
+    }
+}

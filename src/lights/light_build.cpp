@@ -38,12 +38,15 @@ std::vector<bool> materialsOutsideTriangles(const Scene& scene) {
 
 /// The sky's luminance table over the lat-long map (times sin theta, so that sampling it follows
 /// radiance per solid angle), and the integral of luminance over the sphere. A floor of 1 % of the
-/// mean keeps the pdf positive wherever the sky might shine.
-std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, double& integral) {
+/// mean keeps the pdf positive wherever the sky might shine. With `upperOnly` (an infinite ground
+/// plane hides every direction below the horizon from every point above it) the rows below the
+/// horizon stay zero: BSDF sampling still finds what is there, with weight 1.
+std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, bool upperOnly, double& integral) {
     std::vector<float> func(size_t(nu) * nv);
     integral = 0;
     const double cell = (2.0 * kPi / nu) * (kPi / nv);
-    for (uint32_t v = 0; v < nv; ++v)
+    const uint32_t rows = upperOnly ? (nv + 1) / 2 : nv;
+    for (uint32_t v = 0; v < rows; ++v)
         for (uint32_t u = 0; u < nu; ++u) {
             const Vec2f uv{(float(u) + 0.5f) / float(nu), (float(v) + 0.5f) / float(nv)};
             const float lum = luminance(skyRadiance(sky, skyDirectionFromUv(uv)));
@@ -52,9 +55,9 @@ std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, d
             integral += double(lum) * sinTheta * cell;
         }
     double mean = 0;
-    for (float f : func) mean += f;
-    mean /= double(func.size());
-    for (uint32_t v = 0; v < nv; ++v) {
+    for (size_t i = 0; i < size_t(rows) * nu; ++i) mean += func[i];
+    mean /= double(size_t(rows) * nu);
+    for (uint32_t v = 0; v < rows; ++v) {
         const float sinTheta = std::sin(kPi * (float(v) + 0.5f) / float(nv));
         for (uint32_t u = 0; u < nu; ++u) func[size_t(v) * nu + u] += float(0.01 * mean) * sinTheta;
     }
@@ -113,7 +116,8 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
     }
     if (options.sky && options.skyWidth > 0 && options.skyHeight > 0) {
         double integral = 0;
-        std::vector<float> func = skyLuminanceTable(scene.sky, options.skyWidth, options.skyHeight, integral);
+        std::vector<float> func =
+            skyLuminanceTable(scene.sky, options.skyWidth, options.skyHeight, scene.ground.enabled, integral);
         if (integral > 0) {
             lights.skyTable = buildPiecewiseConstant2D(func, options.skyWidth, options.skyHeight);
             lights.skyNu = options.skyWidth;
