@@ -18,6 +18,7 @@ struct Strategy {
     uint32_t lightSamples;
     LightSamplerKind sampler;
     bool buildTables;
+    bool compensateSky = true;
 };
 
 const Strategy kStrategies[] = {
@@ -25,6 +26,7 @@ const Strategy kStrategies[] = {
     {"MIS, power sampler", 1, LightSamplerKind::Power, true},
     {"MIS, uniform sampler", 1, LightSamplerKind::Uniform, true},
     {"MIS, 3 light samples", 3, LightSamplerKind::Power, true},
+    {"MIS, sky table not compensated", 1, LightSamplerKind::Power, true, false},
     {"lights not built (the sun alone is light-sampled)", 1, LightSamplerKind::Power, false},
 };
 
@@ -35,7 +37,9 @@ Vec3f imageMean(const LinearImage& image) {
 }
 
 Vec3f renderMean(Scene scene, const Strategy& strategy, const Camera& camera, uint32_t side, uint32_t spp) {
-    if (strategy.buildTables) buildLights(scene);
+    LightBuildOptions options;
+    options.compensateSky = strategy.compensateSky;
+    if (strategy.buildTables) buildLights(scene, options);
     RenderSettings settings;
     settings.width = settings.height = side;
     settings.spp = spp;

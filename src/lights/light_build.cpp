@@ -36,30 +36,38 @@ std::vector<bool> materialsOutsideTriangles(const Scene& scene) {
     return outside;
 }
 
-/// The sky's luminance table over the lat-long map (times sin theta, so that sampling it follows
-/// radiance per solid angle), and the integral of luminance over the sphere. A floor of 1 % of the
-/// mean keeps the pdf positive wherever the sky might shine. With `upperOnly` (an infinite ground
-/// plane hides every direction below the horizon from every point above it) the rows below the
-/// horizon stay zero: BSDF sampling still finds what is there, with weight 1.
-std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, bool upperOnly, double& integral) {
-    std::vector<float> func(size_t(nu) * nv);
-    integral = 0;
+/// The sky's luminance table over the lat-long map, times sin theta so that sampling it follows
+/// radiance per solid angle, and its integral over the sphere (luminance per solid angle). With
+/// `upperOnly` (an infinite ground plane hides every direction below the horizon from every point
+/// above it) the rows below the horizon stay zero. With `compensate`, the table holds only what
+/// exceeds the sky's mean luminance (MIS compensation, Karlik et al. 2019; pbrt-v4
+/// ImageInfiniteLight): BSDF sampling already finds the even part well, so light samples go where
+/// the sky is brighter than that. Directions of pdf 0 are BSDF sampling's alone, with weight 1:
+/// every estimate stays unbiased.
+std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, bool upperOnly, bool compensate,
+                                     double& integral) {
+    std::vector<float> func(size_t(nu) * nv, 0.0f);
     const double cell = (2.0 * kPi / nu) * (kPi / nv);
     const uint32_t rows = upperOnly ? (nv + 1) / 2 : nv;
+    double weighted = 0, solidAngle = 0;
     for (uint32_t v = 0; v < rows; ++v)
         for (uint32_t u = 0; u < nu; ++u) {
             const Vec2f uv{(float(u) + 0.5f) / float(nu), (float(v) + 0.5f) / float(nv)};
             const float lum = luminance(skyRadiance(sky, skyDirectionFromUv(uv)));
-            const float sinTheta = std::sin(kPi * uv.y);
-            func[size_t(v) * nu + u] = lum * sinTheta;
-            integral += double(lum) * sinTheta * cell;
+            const double sinTheta = std::sin(kPi * uv.y);
+            func[size_t(v) * nu + u] = lum;
+            weighted += double(lum) * sinTheta;
+            solidAngle += sinTheta;
         }
-    double mean = 0;
-    for (size_t i = 0; i < size_t(rows) * nu; ++i) mean += func[i];
-    mean /= double(size_t(rows) * nu);
+    const float mean = compensate && solidAngle > 0 ? float(weighted / solidAngle) : 0.0f;
+    integral = 0;
     for (uint32_t v = 0; v < rows; ++v) {
         const float sinTheta = std::sin(kPi * (float(v) + 0.5f) / float(nv));
-        for (uint32_t u = 0; u < nu; ++u) func[size_t(v) * nu + u] += float(0.01 * mean) * sinTheta;
+        for (uint32_t u = 0; u < nu; ++u) {
+            float& f = func[size_t(v) * nu + u];
+            f = fmaxf(0.0f, f - mean) * sinTheta;
+            integral += double(f) * cell;
+        }
     }
     return func;
 }
@@ -117,7 +125,7 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
     if (options.sky && options.skyWidth > 0 && options.skyHeight > 0) {
         double integral = 0;
         std::vector<float> func =
-            skyLuminanceTable(scene.sky, options.skyWidth, options.skyHeight, scene.ground.enabled, integral);
+            skyLuminanceTable(scene.sky, options.skyWidth, options.skyHeight, scene.ground.enabled, options.compensateSky, integral);
         if (integral > 0) {
             lights.skyTable = buildPiecewiseConstant2D(func, options.skyWidth, options.skyHeight);
             lights.skyNu = options.skyWidth;

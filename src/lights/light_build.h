@@ -10,6 +10,7 @@ namespace urbis {
 struct LightBuildOptions {
     bool sun = true, sky = true, surfaces = true;  ///< which kinds join the list (tests leave some out)
     uint32_t skyWidth = 128, skyHeight = 64;       ///< cells of the sky's table in azimuth and polar angle
+    bool compensateSky = true;                     ///< the sky's table holds what exceeds its mean (light_build.cpp)
 };
 
 /// Fills scene.lights from the rest of `scene`. What is left out of the list is still found by
