@@ -32,6 +32,20 @@ float hitDistance(const TriangleLight& t, Vec3f from, Vec3f dir) {
     return dot(e2, q) / det;
 }
 
+/// Bins uniform in theta about the sky map's axis (+y) and from its origin of phi (+x towards +z),
+/// aligned with the table's cells when the counts divide its 64 x 128: the midpoint rule
+/// integrates the pdf exactly there.
+chi2::DirectionBins skyMapBins(int thetaBins, int phiBins, double cosMin, int subdivisions) {
+    chi2::DirectionBins bins;
+    bins.frame = Frame{Vec3f{1, 0, 0}, Vec3f{0, 0, 1}, Vec3f{0, 1, 0}};
+    bins.uniformInTheta = true;
+    bins.cosMin = cosMin;
+    bins.thetaBins = thetaBins;
+    bins.phiBins = phiBins;
+    bins.subdivisions = subdivisions;
+    return bins;
+}
+
 /// Lights: a sun, the default sky, and three emitting surfaces of different sizes and radiance.
 Scene lightsScene() {
     TriangleMesh mesh;
@@ -55,13 +69,7 @@ TEST(LightsChi2, SkyFromItsTable) {
     ASSERT_NE(view.lights.skyLight, kNoLight);
     ASSERT_FALSE(view.lights.skyTable.empty());
     const LightRecord sky = lightRecord(view.lights, view.lights.skyLight);
-    chi2::DirectionBins bins;
-    // Bins aligned with the table's cells (64 rows in theta, 128 columns in phi) about the map's
-    // own axis and origin of phi, so that the midpoint rule integrates the pdf exactly.
-    bins.frame = Frame{Vec3f{1, 0, 0}, Vec3f{0, 0, 1}, Vec3f{0, 1, 0}};
-    bins.uniformInTheta = true;
-    bins.thetaBins = 32;
-    bins.phiBins = 32;
+    const chi2::DirectionBins bins = skyMapBins(32, 32, -1.0, 12);
     uint32_t mismatches = 0;  // a direction rounded back across a cell's edge reads its neighbour's pdf
     expectFits(
         [&](float u0, float u1, float u2, Vec3f& d) {
@@ -174,13 +182,8 @@ TEST(LightsPdf, IntegratesToOne) {
     Scene scene = lightsScene();
     const SceneView view = scene.view();
     const LightRecord sky = lightRecord(view.lights, view.lights.skyLight), sun = lightRecord(view.lights, view.lights.sunLight);
-    chi2::DirectionBins sphere;
-    sphere.frame = Frame{Vec3f{1, 0, 0}, Vec3f{0, 0, 1}, Vec3f{0, 1, 0}};
-    sphere.uniformInTheta = true;
-    sphere.thetaBins = 64;
-    sphere.phiBins = 128;
-    sphere.subdivisions = 2;
-    EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sky, d, 0, 0)); }, sphere), 1.0, 1e-4);
+    EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sky, d, 0, 0)); }, skyMapBins(64, 128, -1.0, 2)),
+                1.0, 1e-4);
     chi2::DirectionBins disk;
     disk.frame = Frame::fromZ(scene.sun.direction);
     disk.cosMin = scene.sun.cosHalfAngle;
@@ -215,14 +218,8 @@ TEST(LightsPdf, SkyAboveTheGroundSamplesTheUpperHemisphere) {
     const SceneView view = scene.view();
     const LightRecord sky = lightRecord(view.lights, view.lights.skyLight);
     EXPECT_EQ(lightPdf(view, sky, normalize(Vec3f{0.3f, -0.2f, 0.5f}), 0, 0), 0.0f);
-    chi2::DirectionBins upper;
-    upper.frame = Frame{Vec3f{1, 0, 0}, Vec3f{0, 0, 1}, Vec3f{0, 1, 0}};
-    upper.uniformInTheta = true;
-    upper.cosMin = 0;
-    upper.thetaBins = 32;
-    upper.phiBins = 128;
-    upper.subdivisions = 2;
-    EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sky, d, 0, 0)); }, upper), 1.0, 1e-4);
+    EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sky, d, 0, 0)); }, skyMapBins(32, 128, 0.0, 2)),
+                1.0, 1e-4);
     SampleStream rng{3, 0, 0};
     for (int i = 0; i < 1000; ++i) {
         LightSample s;
