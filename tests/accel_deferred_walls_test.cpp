@@ -8,6 +8,7 @@
 #include "geometry/scene_intersect.h"
 #include "layout/city_layout.h"
 #include "math/rng.h"
+#include "math/sampling.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>

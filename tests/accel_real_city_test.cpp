@@ -2,6 +2,7 @@
 #include "citygen/city_mesher.h"
 #include "geometry/triangle_scene.h"
 #include "math/rng.h"
+#include "math/sampling.h"
 #include "osm/osm_import.h"
 #include "scene/scene.h"
 

@@ -29,12 +29,11 @@ inline Scene wallScene(bool groundAndSun = false) {
     mesh.add({a, b, c}, info);
     mesh.add({a, c, d}, info);
     Material glossyGround{Vec3f{0.3f, 0.3f, 0.3f}, MaterialKind::Glossy, Vec3f{0.2f, 0.2f, 0.2f}, 40.0f};
-    Scene scene = Scene::build(mesh, {Material{kWallAlbedo}, glossyGround});
+    std::vector<GroundRecord> ground;
+    if (groundAndSun) ground.push_back(GroundRecord::around(0.0f, 0.0f, 0.0f, 1));
+    Scene scene = Scene::build(mesh, {Material{kWallAlbedo}, glossyGround}, {}, {}, ground);
     scene.sky = Sky::uniform(Vec3f{0.8f, 0.9f, 1.0f});
-    if (groundAndSun) {
-        scene.ground = GroundPlane{0.0f, 1, true};
-        scene.sun = makeSun(25.0f, 160.0f, 0.5f, Vec3f{3.0f, 2.8f, 2.5f});
-    }
+    if (groundAndSun) scene.sun = makeSun(25.0f, 160.0f, 0.5f, Vec3f{3.0f, 2.8f, 2.5f});
     return scene;
 }
 

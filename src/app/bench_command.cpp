@@ -86,8 +86,8 @@ RayBatches makeRays(const Scene& scene, const Camera& camera, const RenderSettin
             float u1 = rng.draw(), u2 = rng.draw(), u3 = rng.draw(), u4 = rng.draw();
             diffuse[i] = Ray{origin, Frame::fromZ(hit.normal).toWorld(sampleCosineHemisphere(u1, u2))};
             hasDiffuse[i] = 1;
-            Vec3f toSun = scene.sun.sampleDirection(u3, u4);
-            if (scene.sun.enabled() && dot(toSun, hit.normal) > 0.0f) {
+            Vec3f toSun = sampleSunDirection(scene.sun, u3, u4);
+            if (sunEnabled(scene.sun) && dot(toSun, hit.normal) > 0.0f) {
                 shadow[i] = Ray{origin, toSun};
                 hasShadow[i] = 1;
             }

@@ -12,6 +12,7 @@
 #include "io/atomic_file.h"
 #include "layout/city_layout.h"
 #include "base/input_error.h"
+#include "lights/light_build.h"
 #include "osm/geo_projection.h"
 #include "osm/osm_import.h"
 #include "scene/camera_framing.h"
@@ -198,6 +199,7 @@ PreparedScene prepareScene(const RenderOptions& o, size_t memoryLimit) {
     p.scene = Scene::build(p.mesh.mesh, p.mesh.materials, p.mesh.walls, tileSize,
                            {GroundRecord::around(centre.x, centre.z, 0.0f, p.mesh.groundMaterial)});
     p.scene.sun = sun;
+    buildLights(p.scene);
     p.secondsBvh = secondsSince(t0);
 
     p.camera = chooseCamera(o, p.city, p.mesh);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "geometry/prim_dispatch.h"
+#include "math/kernel_math.h"
 
 namespace urbis {
 

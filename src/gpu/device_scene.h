@@ -14,6 +14,7 @@ struct DeviceScene {
 #undef URBIS_DEVICE_MEMBER
     Sun sun;
     Sky sky;
+    LightListInfo lights;
 
     /// Device bytes the arrays of `scene` take.
     static size_t bytesFor(const Scene& scene) { return scene.memory().total(); }
@@ -25,6 +26,7 @@ struct DeviceScene {
 #undef URBIS_DEVICE_UPLOAD
         sun = scene.sun;
         sky = scene.sky;
+        lights = scene.lights;
     }
 
     /// Device bytes held now, by array.
@@ -37,7 +39,7 @@ struct DeviceScene {
     }
 
     /// What kernels read: the same SceneView the CPU backend gets, over device pointers.
-    SceneView view() const { return makeSceneView(*this, sun, sky); }
+    SceneView view() const { return makeSceneView(*this, sun, sky, lights); }
 };
 
 } // namespace urbis

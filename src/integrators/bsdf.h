@@ -10,7 +10,7 @@
 namespace urbis {
 
 /// Mirror reflection of `wo` about `n`.
-URBIS_HD inline Vec3f reflect(Vec3f wo, Vec3f n) { return fusedMulAdd(n, 2.0f * fusedDot(wo, n), -wo); }
+URBIS_HD inline Vec3f reflect(Vec3f wo, Vec3f n) { return n * (2.0f * dot(wo, n)) - wo; }
 
 /// Whether the material scatters only into single directions: light sampling cannot reach it.
 URBIS_HD inline bool isSpecular(const Material& m) { return m.kind == MaterialKind::Mirror || m.kind == MaterialKind::Glass; }
@@ -18,34 +18,35 @@ URBIS_HD inline bool isSpecular(const Material& m) { return m.kind == MaterialKi
 /// Probability that a Glossy material samples its Phong lobe rather than its diffuse part.
 URBIS_HD inline float glossyLobeChance(const Material& m) {
     float d = luminance(m.albedo), s = luminance(m.specular);
-    return d + s > 0.0f ? approxDivide(s, d + s) : 0.0f;
+    return d + s > 0.0f ? s / (d + s) : 0.0f;
 }
 
 /// f(wo, wi) * cos(wi, n) of a non-specular material; zero below the surface.
 URBIS_HD inline Vec3f evalBsdfCos(const Material& m, Vec3f wo, Vec3f wi, Vec3f n) {
-    float cosine = fusedDot(wi, n);
+    float cosine = dot(wi, n);
     if (cosine <= 0.0f || isSpecular(m)) return {};
     Vec3f f = m.albedo * (1.0f / kPi);
     if (m.kind == MaterialKind::Glossy) {
-        float c = fmaxf(0.0f, fusedDot(wi, reflect(wo, n)));
-        f = fusedMulAdd(m.specular, approxDivide(m.exponent + 2.0f, 2.0f * kPi) * powPositive(c, m.exponent), f);
+        float c = fmaxf(0.0f, dot(wi, reflect(wo, n)));
+        f += m.specular * ((m.exponent + 2.0f) / (2.0f * kPi) * powf(c, m.exponent));
     }
     return f * cosine;
 }
 
 /// The solid-angle pdf with which sampleBsdf picks `wi` for a non-specular material.
 URBIS_HD inline float bsdfPdf(const Material& m, Vec3f wo, Vec3f wi, Vec3f n) {
-    float cosine = fusedDot(wi, n);
+    float cosine = dot(wi, n);
     if (cosine <= 0.0f || isSpecular(m)) return 0.0f;
     if (m.kind != MaterialKind::Glossy) return cosineHemispherePdf(cosine);
     float lobe = glossyLobeChance(m);
-    return fusedMulAdd(lobe, phongLobePdf(fusedDot(wi, reflect(wo, n)), m.exponent), (1.0f - lobe) * cosineHemispherePdf(cosine));
+    return lobe * phongLobePdf(dot(wi, reflect(wo, n)), m.exponent) + (1.0f - lobe) * cosineHemispherePdf(cosine);
 }
 
 struct BsdfSample {
     Vec3f dir;
     Vec3f weight;          ///< f * cos / pdf, or the specular throughput
     bool specular = false;
+    float pdf = 0;         ///< solid angle, of the non-specular ones (bsdfPdf): for MIS
 };
 
 /// Samples a scattered direction from three uniform numbers. Returns false when the path ends
@@ -58,10 +59,10 @@ URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, 
     case MaterialKind::Glass: {
         // Schlick's approximation (Schlick 1994) of the Fresnel reflectance; reflect or transmit in
         // proportion, so each branch's weight is 1 (reflection) or the tint (transmission).
-        float r0 = approxDivide(m.ior - 1.0f, m.ior + 1.0f);
+        float r0 = (m.ior - 1.0f) / (m.ior + 1.0f);
         r0 *= r0;
-        float c = 1.0f - fminf(1.0f, fabsf(fusedDot(wo, n)));
-        float fresnel = fusedMulAdd((1.0f - r0) * c * c * c * c, c, r0);
+        float c = 1.0f - fminf(1.0f, fabsf(dot(wo, n)));
+        float fresnel = r0 + (1.0f - r0) * c * c * c * c * c;
         if (u0 < fresnel) s = {reflect(wo, n), Vec3f{1, 1, 1}, true};
         else s = {-wo, m.albedo, true};
         return true;
@@ -74,12 +75,12 @@ URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, 
         const Vec3f wi = Frame::fromZ(phong ? reflect(wo, n) : n)
                              .toWorld(phong ? samplePhongLobe(u1, u2, m.exponent) : sampleCosineHemisphere(u1, u2));
         if (m.kind == MaterialKind::Lambertian) {
-            s = {wi, m.albedo, false};   // cosine sampling makes f * cos / pdf equal to the albedo
+            s = {wi, m.albedo, false, cosineHemispherePdf(dot(wi, n))};   // cosine sampling: f * cos / pdf is the albedo
             return true;
         }
         float pdf = bsdfPdf(m, wo, wi, n);
         if (!(pdf > 0.0f)) return false;
-        s = {wi, evalBsdfCos(m, wo, wi, n) * approxDivide(1.0f, pdf), false};
+        s = {wi, evalBsdfCos(m, wo, wi, n) / pdf, false, pdf};
         return true;
     }
     }

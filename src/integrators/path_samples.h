@@ -2,7 +2,7 @@
 #pragma once
 
 #include "film/film_view.h"
-#include "integrators/path_tracer.h"
+#include "integrators/integrator.h"
 
 namespace urbis {
 
@@ -15,7 +15,7 @@ URBIS_HD inline uint32_t addPathSamples(const SceneView& scene, const Camera& ca
     Vec3f sum = film.radianceSum[pixel];
     uint32_t rays = 0;
     for (uint32_t s = samples.first; s < samples.first + samples.count; ++s) {
-        const PathSample sample = tracePath(scene, camera, settings, px, py, s);
+        const PathSample sample = integrateSample(scene, camera, settings, px, py, s);
         sum += sample.radiance;
         rays += sample.rays;
     }

@@ -1,14 +1,15 @@
-// The unidirectional path tracer: diffuse, glossy, mirror and glass surfaces, emitters found by
-// BSDF sampling, sun by next-event estimation (and by specular bounces), sky by BSDF sampling,
-// Russian roulette. Host+device; runs once per pixel sample.
+// The unidirectional path tracer: diffuse, glossy, mirror and glass surfaces; next-event
+// estimation of the scene's lights (sun, sky, emitting surfaces) combined with BSDF sampling by the
+// power heuristic (Veach 1997, chapter 9); Russian roulette. Host+device; runs once per pixel sample.
 #pragma once
 
-#include "integrators/bsdf.h"
-#include "math/rng.h"
-#include "math/sampling.h"
-#include "scene/camera.h"
-#include "scene/render_settings.h"
 #include "geometry/scene_intersect.h"
+#include "integrators/bsdf.h"
+#include "integrators/camera_sample.h"
+#include "lights/light.h"
+#include "lights/light_sampler.h"
+#include "lights/mis.h"
+#include "scene/render_settings.h"
 
 namespace urbis {
 
@@ -21,84 +22,173 @@ struct PathSample {
 /// Offset from a surface point along its facing normal, scaled with the point's magnitude so that
 /// new rays clear the surface at city coordinates (thousands of metres) in float precision.
 URBIS_HD inline Vec3f offsetRayOrigin(Vec3f p, Vec3f facingNormal) {
-    const float scale = fusedMulAdd(4e-6f, maxComponent(Vec3f{fabsf(p.x), fabsf(p.y), fabsf(p.z)}), 1e-4f);
-    return fusedMulAdd(facingNormal, scale, p);
+    const float scale = 4e-6f * maxComponent(Vec3f{fabsf(p.x), fabsf(p.y), fabsf(p.z)}) + 1e-4f;
+    return p + facingNormal * scale;
+}
+
+/// A scattering point of the path, kept while its light samples are traced.
+struct PathVertex {
+    Vec3f position, normal, wo;  ///< normal: geometric, on the side of wo
+    Vec3f throughput;            ///< of the path up to this vertex
+    uint32_t material = 0;
+    bool bsdfStrategy = false;   ///< whether the path samples its BSDF here (not at maxDepth): MIS counts it
+};
+
+/// How the BSDF sample that found an emitter was drawn: MIS weighs what it finds.
+struct BounceInfo {
+    float pdf = 0;        ///< solid angle
+    bool countsInFull = true;  ///< camera rays and specular bounces: no light sample can find the same light
+};
+
+/// Weight of emission that a BSDF sample of `bounce` found, against `lightSamples` light samples
+/// that pick `light` with `selectionPmf` and reach the same point with solid-angle pdf `pdf`.
+URBIS_HD inline float bsdfFoundWeight(const BounceInfo& bounce, uint32_t lightSamples, float selectionPmf, float pdf) {
+    if (bounce.countsInFull) return 1.0f;
+    return powerHeuristic(1.0f, bounce.pdf, float(lightSamples), selectionPmf * pdf);
+}
+
+/// Weight of one of `lightSamples` light samples of solid-angle pdf `lightPdf` (selection
+/// included) against the BSDF sample of the same vertex, which would find that direction with
+/// `bsdfPdf`.
+URBIS_HD inline float lightSampleWeight(uint32_t lightSamples, float lightPdf, float bsdfPdf) {
+    return powerHeuristic(float(lightSamples), lightPdf, 1.0f, bsdfPdf);
+}
+
+/// The shadow ray from a surface point towards a light sample. Towards a point of a surface it is
+/// aimed from the offset origin at that point and stops short of it, so that the emitter does not
+/// block its own light (aimed along the sampled direction, its surface lies at the ray's end only
+/// within rounding, and it would block half of the rays).
+URBIS_HD inline Ray shadowRayTowards(Vec3f position, Vec3f facingNormal, const LightSample& ls) {
+    const Vec3f origin = offsetRayOrigin(position, facingNormal);
+    if (!(ls.distance < 3.0e38f)) return Ray{origin, ls.dir};
+    const Vec3f toTarget = position + ls.dir * ls.distance - origin;
+    const float distance = length(toTarget);
+    return Ray{origin, toTarget / distance, 0.0f, distance * (1.0f - 1e-4f)};
+}
+
+/// One light sample from `vertex`: the shadow ray towards the light and what it adds if nothing
+/// blocks it. Returns false when it adds nothing (then no ray is traced).
+URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSettings& settings, const PathVertex& vertex,
+                                     SampleStream& rng, Ray& shadow, Vec3f& contribution) {
+    const float uLight = rng.draw(), u0 = rng.draw(), u1 = rng.draw(), u2 = rng.draw();
+    float pmf;
+    const uint32_t index = selectLight(scene.lights, settings.lightSampler, uLight, pmf);
+    if (!(pmf > 0.0f)) return false;
+    LightSample ls;
+    if (!sampleLight(scene, lightRecord(scene.lights, index), vertex.position, u0, u1, u2, ls)) return false;
+    const Material& material = scene.materials[vertex.material];
+    const Vec3f fCos = evalBsdfCos(material, vertex.wo, ls.dir, vertex.normal);
+    const float lightPdf = pmf * ls.pdf;
+    if (!(maxComponent(fCos) > 0.0f) || !(lightPdf > 0.0f)) return false;
+    const float weight =
+        vertex.bsdfStrategy ? lightSampleWeight(settings.lightSamples, lightPdf, bsdfPdf(material, vertex.wo, ls.dir, vertex.normal))
+                            : 1.0f;
+    contribution = vertex.throughput * fCos * ls.radiance * (weight / (float(settings.lightSamples) * lightPdf));
+    if (!(maxComponent(contribution) > 0.0f)) return false;
+    shadow = shadowRayTowards(vertex.position, vertex.normal, ls);
+    return true;
 }
 
 /// Traces the path of sample `sampleIndex` through pixel (px, py); pure function of its arguments.
+/// Every ray, the path's and the light samples' shadow rays, is traced at the one call of
+/// traceScene in the loop, so that the GPU kernel holds one copy of the traversal: after a vertex is
+/// shaded, its settings.lightSamples shadow rays come next, one per iteration, then the path's
+/// next ray. A medium step joins the same way, as one more kind of next ray.
 URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
                                      uint32_t px, uint32_t py, uint32_t sampleIndex) {
-    SampleStream rng{settings.seed, py * settings.width + px, sampleIndex};
-    float jx = rng.draw(), jy = rng.draw();
-    Ray ray = camera.generateRay(approxDivide(float(px) + jx, float(settings.width)),
-                                 approxDivide(float(py) + jy, float(settings.height)));
+    SampleStream rng = pixelSampleStream(settings, px, py, sampleIndex);
+    Ray pathRay = cameraSampleRay(camera, settings, px, py, rng);
     PathSample out;
     Vec3f throughput{1, 1, 1};
-    bool specularBounce = false;   // the camera ray does not show the sun's disk
-    // Each ray of the path, the sun's shadow rays included, is traced at the one call of traceScene
-    // below, so that the GPU kernel holds one copy of the traversal (docs/gpu_notes.md): a pending
-    // shadow ray is traced first, then the path goes on (or ends, if `pathEnds`).
-    Ray shadow;
-    Vec3f sunlight;                // what the pending shadow ray adds if nothing blocks it
-    bool shadowPending = false, pathEnds = false;
+    BounceInfo bounce;
+    bool cameraRay = true;          // the camera does not show the sun's disk
+    PathVertex vertex;
+    Ray ray = pathRay;
+    Vec3f shadowContribution;       // what the shadow ray in flight adds if nothing blocks it
+    bool tracingShadow = false, pathEnds = false;
+    uint32_t lightSamplesLeft = 0;
+    const LightsView& lights = scene.lights;
     for (uint32_t depth = 0;;) {
-        const SurfaceHit hit = traceScene(scene, shadowPending ? shadow : ray, shadowPending);
+        const SurfaceHit hit = traceScene(scene, ray, tracingShadow);
         ++out.rays;
-        if (shadowPending) {
-            if (!hit.valid()) out.radiance += sunlight;
-            shadowPending = false;
-            if (pathEnds) break;
-            continue;
-        }
-        if (!hit.valid()) {
-            out.radiance = fusedMulAdd(throughput, scene.sky.radiance(ray.dir), out.radiance);
-            // Light sampling cannot reach the disk through a mirror or glass: count it here.
-            if (specularBounce && scene.sun.contains(approxNormalize(ray.dir)))
-                out.radiance = fusedMulAdd(throughput, scene.sun.radiance, out.radiance);
-            break;
-        }
-        Vec3f normal = hit.normal;
-        const Material& material = scene.materials[hit.material];
-        // No emitter is light-sampled yet, so every hit counts its emission in full.
-        out.radiance = fusedMulAdd(throughput, material.emission, out.radiance);
-        Vec3f wo = approxNormalize(-ray.dir);
-        const Vec3f position = fusedMulAdd(ray.dir, hit.t, ray.origin);
-
-        // Next-event estimation towards the sun's disk; the sky lookup never includes the disk.
-        float u1 = rng.draw(), u2 = rng.draw();
-        if (scene.sun.enabled() && !isSpecular(material)) {
-            Vec3f toSun = scene.sun.sampleDirection(u1, u2);
-            Vec3f fCos = evalBsdfCos(material, wo, toSun, normal);
-            if (maxComponent(fCos) > 0.0f) {
-                shadow = Ray{offsetRayOrigin(position, normal), toSun};
-                sunlight = throughput * fCos * scene.sun.radiance * approxDivide(1.0f, scene.sun.pdf());
-                shadowPending = true;
+        if (tracingShadow) {
+            if (!hit.valid()) out.radiance += shadowContribution;
+        } else if (!hit.valid()) {
+            // The sky, and the sun's disk: found by BSDF sampling, weighed against light sampling
+            // (their pdfs only where the weight needs them: not for camera rays and specular bounces).
+            const Vec3f dir = normalize(ray.dir);
+            const LightRecord sky{LightKind::Sky, 0, 0.0f}, sun{LightKind::Sun, 0, 0.0f};
+            float skyWeight = 1.0f;
+            if (!bounce.countsInFull && lights.skyLight != kNoLight)
+                skyWeight = bsdfFoundWeight(bounce, settings.lightSamples,
+                                            lightSelectionPmf(lights, settings.lightSampler, lights.skyLight),
+                                            lightPdf(scene, sky, dir, 0.0f, 0.0f));
+            out.radiance += throughput * skyRadiance(scene.sky, dir) * skyWeight;
+            if (!cameraRay && sunEnabled(scene.sun) && sunContains(scene.sun, dir)) {
+                const float sunWeight = bsdfFoundWeight(bounce, settings.lightSamples,
+                                                        lightSelectionPmf(lights, settings.lightSampler, lights.sunLight),
+                                                        lightPdf(scene, sun, dir, 0.0f, 0.0f));
+                out.radiance += throughput * scene.sun.radiance * sunWeight;
             }
-        }
-        // The path goes on unless it is deep enough, is absorbed or loses the Russian roulette.
-        BsdfSample bsdf;
-        bool goesOn = depth + 1 < settings.maxDepth;
-        if (goesOn) {
-            float u3 = rng.draw(), u4 = rng.draw();
-            float u5 = material.kind == MaterialKind::Lambertian ? 0.0f : rng.draw();
-            goesOn = sampleBsdf(material, wo, normal, u5, u3, u4, bsdf);
-        }
-        if (goesOn) {
-            throughput *= bsdf.weight;
-            specularBounce = bsdf.specular;
-            if (depth + 1 >= settings.rrDepth) {
-                float survival = fminf(maxComponent(throughput), settings.rrSurvival);
-                goesOn = rng.draw() < survival;
-                throughput *= approxDivide(1.0f, survival);
-            }
-        }
-        if (!goesOn) {
             pathEnds = true;
-            if (shadowPending) continue;
-            break;
+        } else {
+            const Material& material = scene.materials[hit.material];
+            const Vec3f dir = normalize(ray.dir);
+            if (maxComponent(material.emission) > 0.0f) {
+                // An emitter found by BSDF sampling: weighed against its light samples where it has any.
+                const uint32_t light = hit.material < lights.materialCount ? lights.lightOfMaterial[hit.material] : kNoLight;
+                float weight = 1.0f;
+                if (light != kNoLight && !bounce.countsInFull)
+                    weight = bsdfFoundWeight(bounce, settings.lightSamples,
+                                             lightSelectionPmf(lights, settings.lightSampler, light),
+                                             lightPdf(scene, lightRecord(lights, light), dir, hit.t * length(ray.dir),
+                                                      dot(hit.normal, dir)));
+                out.radiance += throughput * material.emission * weight;
+            }
+            vertex.position = ray.origin + ray.dir * hit.t;
+            vertex.normal = hit.normal;
+            vertex.wo = -dir;
+            vertex.throughput = throughput;
+            vertex.material = hit.material;
+            const bool scatters = !isSpecular(material);
+            // The path goes on unless it is deep enough, is absorbed or loses the Russian roulette.
+            BsdfSample bsdf;
+            bool goesOn = depth + 1 < settings.maxDepth;
+            // Whether BSDF sampling is a strategy here does not depend on how its sample turns out
+            // (absorbed, below the surface, lost to Russian roulette): the light samples' weights must not.
+            vertex.bsdfStrategy = goesOn;
+            if (goesOn) {
+                float u3 = rng.draw(), u4 = rng.draw();
+                float u5 = material.kind == MaterialKind::Lambertian ? 0.0f : rng.draw();
+                goesOn = sampleBsdf(material, vertex.wo, vertex.normal, u5, u3, u4, bsdf);
+            }
+            if (goesOn) {
+                throughput *= bsdf.weight;
+                bounce = BounceInfo{bsdf.pdf, bsdf.specular};
+                if (depth + 1 >= settings.rrDepth) {
+                    float survival = fminf(maxComponent(throughput), settings.rrSurvival);
+                    goesOn = rng.draw() < survival;
+                    throughput *= 1.0f / survival;
+                }
+            }
+            lightSamplesLeft = scatters ? settings.lightSamples : 0;
+            pathEnds = !goesOn;
+            if (goesOn) {
+                pathRay = Ray{offsetRayOrigin(vertex.position, dot(bsdf.dir, hit.normal) > 0.0f ? hit.normal : -hit.normal),
+                              bsdf.dir};
+                ++depth;
+            }
+            cameraRay = false;
         }
-        ray = Ray{offsetRayOrigin(position, fusedDot(bsdf.dir, normal) > 0.0f ? normal : -normal), bsdf.dir};
-        ++depth;
+        // The next ray: the vertex's pending light samples first, then the path's own.
+        tracingShadow = false;
+        while (lightSamplesLeft > 0 && !tracingShadow) {
+            --lightSamplesLeft;
+            tracingShadow = sampleShadowRay(scene, settings, vertex, rng, ray, shadowContribution);
+        }
+        if (tracingShadow) continue;
+        if (pathEnds) break;
+        ray = pathRay;
     }
     return out;
 }

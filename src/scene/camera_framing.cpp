@@ -1,6 +1,6 @@
 #include "scene/camera_framing.h"
 
-#include "lights/sun.h"
+#include "scene/sun.h"
 #include "math/sampling.h"
 
 #include <algorithm>

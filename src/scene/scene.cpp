@@ -85,7 +85,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
     return scene;
 }
 
-SceneView Scene::view() const { return makeSceneView(*this, sun, sky); }
+SceneView Scene::view() const { return makeSceneView(*this, sun, sky, lights); }
 
 SceneMemory Scene::memory() const {
     SceneMemory memory;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "accel/bvh_node.h"
+#include "scene/light_records.h"
 #include "scene/material.h"
 #include "scene/prim_kinds.h"
 
@@ -16,7 +17,13 @@
     X(TriangleInfo, triangleInfo, "triangle_info")     \
     X(WallRecord, walls, "walls")                      \
     X(GroundRecord, grounds, "grounds")                \
-    X(Material, materials, "materials")
+    X(Material, materials, "materials")                \
+    X(LightRecord, lightRecords, "light_records")      \
+    X(float, lightPower, "light_power")                \
+    X(EmissiveSurface, emissiveSurfaces, "emissive_surfaces") \
+    X(TriangleLight, triangleLights, "triangle_lights") \
+    X(uint32_t, lightOfMaterial, "light_of_material")  \
+    X(float, skyTable, "sky_table")
 
 namespace urbis {
 

@@ -2,9 +2,10 @@
 // value; the same on both backends.
 #pragma once
 
-#include "lights/sky.h"
-#include "lights/sun.h"
 #include "scene/scene_arrays.h"
+#include "scene/scene_lights.h"
+#include "scene/sky.h"
+#include "scene/sun.h"
 
 namespace urbis {
 
@@ -19,6 +20,7 @@ struct SceneView {
     bool costlyLeaves = false;
     Sun sun;
     Sky sky;
+    LightsView lights;                   ///< the light sampler's list and tables (not built: sun and sky)
 
     /// The first leaf slot of kind I.
     URBIS_HD uint32_t kindStart(uint32_t i) const { return i == 0 ? 0u : kindEnd[i - 1]; }
@@ -26,7 +28,7 @@ struct SceneView {
 
 /// The view of a scene's arrays, host vectors or device buffers alike (anything with the members of
 /// scene_arrays.h, each with data() and size()).
-SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky) {
+SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky, const LightListInfo& lights) {
     SceneView view;
 #define URBIS_VIEW_ARRAY(Type, name, key) view.name = {arrays.name.data(), uint32_t(arrays.name.size())};
     URBIS_SCENE_ARRAYS(URBIS_VIEW_ARRAY)
@@ -40,6 +42,7 @@ SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky) {
     });
     view.sun = sun;
     view.sky = sky;
+    view.lights = makeLightsView(arrays, lights);
     return view;
 }
 

@@ -1,4 +1,6 @@
-#include "lights/sun.h"
+#include "scene/sun.h"
+
+#include "math/kernel_math.h"
 
 namespace urbis {
 

@@ -1,9 +1,8 @@
-// The sun: a disk of uniform radiance with a finite angular radius (soft shadows), sampled by
-// next-event estimation only (sky lookups exclude the disk, so nothing is counted twice).
+// The sun's record (host+device POD): a disk of uniform radiance with a finite angular radius, so
+// that shadows are soft. Sampling and evaluation live in lights/sun_light.h.
 #pragma once
 
-#include "math/frame.h"
-#include "math/sampling.h"
+#include "math/vec.h"
 
 namespace urbis {
 
@@ -11,14 +10,6 @@ struct Sun {
     Vec3f direction{0, 1, 0};  ///< unit, world space, towards the sun
     Vec3f radiance{0, 0, 0};   ///< per steradian inside the disk; zero turns the sun off
     float cosHalfAngle = 1.0f; ///< cosine of the angular radius
-
-    URBIS_HD bool enabled() const { return maxComponent(radiance) > 0.0f; }
-    /// A direction towards the disk, uniform in solid angle; its pdf is 1 / solid angle.
-    URBIS_HD Vec3f sampleDirection(float u1, float u2) const {
-        return Frame::fromZ(direction).toWorld(sampleUniformCone(u1, u2, cosHalfAngle));
-    }
-    URBIS_HD float pdf() const { return uniformConePdf(cosHalfAngle); }
-    URBIS_HD bool contains(Vec3f unitDir) const { return fusedDot(unitDir, direction) >= cosHalfAngle; }
 };
 
 /// A sun at elevation and azimuth (degrees; azimuth clockwise from north) whose disk of the given

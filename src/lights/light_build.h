@@ -1,0 +1,25 @@
+// Builds a scene's light list and tables on the host (Scene::lights), once its geometry, materials,
+// sun and sky are set: the sun and the sky where they shine, one EmissiveSurface per emitting
+// material of the triangles, each light's power, and the sky's importance table (light arrays of
+// scene_arrays.h, and Scene::lights beside them).
+#pragma once
+
+#include "scene/scene.h"
+
+namespace urbis {
+
+struct LightBuildOptions {
+    bool sun = true, sky = true, surfaces = true;  ///< which kinds join the list (tests leave some out)
+    uint32_t skyWidth = 128, skyHeight = 64;       ///< cells of the sky's table in azimuth and polar angle
+    bool compensateSky = true;                     ///< the sky's table holds what exceeds its mean (light_build.cpp)
+};
+
+/// Fills the light arrays of `scene` (scene_arrays.h) and scene.lights from the rest of it. What is left out of the list is still found by
+/// BSDF sampling and counted in full; so is an emitting material that a wall or the ground also
+/// uses (their emission cannot be light-sampled yet).
+void buildLights(Scene& scene, const LightBuildOptions& options = {});
+
+/// The world bounds of a light (infinite lights: empty); the light BVH's input.
+Bounds3f lightBounds(const Scene& scene, const LightRecord& light);
+
+} // namespace urbis

@@ -1,0 +1,22 @@
+// The closed sets a render chooses from (host+device enums): which integrator runs, and how it
+// picks a light for next-event estimation.
+#pragma once
+
+#include <cstdint>
+
+namespace urbis {
+
+/// Integrators both backends drive through integrateSample (integrators/integrator.h).
+enum class IntegratorKind : uint32_t {
+    Path,  ///< unidirectional path tracing with MIS (integrators/path_tracer.h)
+    // VolumetricPath (media: atmosphere, clouds) and PhotonBuffers join here.
+};
+
+/// How the light sampler picks one light of the scene's list (lights/light_sampler.h).
+enum class LightSamplerKind : uint32_t {
+    Uniform,  ///< every light of the list alike
+    Power,    ///< in proportion to each light's power (LightRecord::power)
+    // Bvh (Conty Estevez and Kulla 2018, for thousands of lamps and lit windows) joins here.
+};
+
+} // namespace urbis

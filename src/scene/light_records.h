@@ -1,0 +1,62 @@
+// Light records (host+device POD) and the view of the scene's light arrays. A light is a tag and an
+// index into the array of its kind; the functions over them (sampling, pdf) live in lights/.
+#pragma once
+
+#include "math/piecewise_constant.h"
+#include "math/vec.h"
+
+#include <cstdint>
+
+namespace urbis {
+
+/// The closed set of light kinds; lights/light.h dispatches on it with a switch.
+enum class LightKind : uint32_t {
+    Sun,              ///< SceneView::sun: a disk of directions
+    Sky,              ///< SceneView::sky: the environment, importance-sampled from its radiance
+    EmissiveSurface,  ///< LightsView::surfaces[index]: the triangles of one emitting material
+    Point,            ///< reserved: street lamps (with an emission profile), not built yet
+    Spot,             ///< reserved: spot lamps (with a cone and profile), not built yet
+    Aggregate,        ///< reserved: many emitters as one (a wall of lit windows), not built yet
+};
+
+/// One light of the sampler's list.
+struct LightRecord {
+    LightKind kind = LightKind::Sun;
+    uint32_t index = 0;  ///< into the array of its kind (0 for the sun and the sky)
+    float power = 0;     ///< luminous flux in the renderer's units (lights/light_build.cpp says how)
+};
+
+/// An emitting surface: every triangle of one material whose emission is not zero, sampled uniformly
+/// by area. It emits `emission` from both sides, as materials do.
+struct EmissiveSurface {
+    Vec3f emission;
+    uint32_t firstTriangle = 0, triangleCount = 0;  ///< range of LightsView::triangles
+    float area = 0;                                 ///< total, square metres
+};
+
+/// A triangle of an EmissiveSurface, with the cumulative share of its surface's area up to and
+/// including it, so that a triangle is picked in proportion to its area by a binary search.
+struct TriangleLight {
+    Vec3f p0, p1, p2;
+    float cdf = 0;
+};
+
+constexpr uint32_t kNoLight = 0xffffffffu;
+
+/// What per-ray code sees of the scene's lights. Not built (buildLights was not called), it stands
+/// for the list {sun}: the sun is light-sampled, the sky and emitters are found by BSDF sampling
+/// and counted in full (the path tracer's estimator before MIS).
+struct LightsView {
+    bool built = false;
+    const LightRecord* records = nullptr;
+    uint32_t count = 0;
+    PiecewiseConstant1DView power;                ///< over records: the power-weighted choice
+    const EmissiveSurface* surfaces = nullptr;
+    const TriangleLight* triangles = nullptr;
+    const uint32_t* lightOfMaterial = nullptr;    ///< per material: its EmissiveSurface's light, or kNoLight
+    uint32_t materialCount = 0;
+    PiecewiseConstant2DView skyTable;             ///< over (u, v) of the sky's lat-long map (lights/sky_light.h)
+    uint32_t sunLight = 0, skyLight = kNoLight;   ///< their places in records, or kNoLight
+};
+
+} // namespace urbis
