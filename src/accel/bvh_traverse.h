@@ -98,7 +98,7 @@ URBIS_HD inline unsigned intersectLanes(const BvhNode& node, const BvhRay& r, fl
 /// Whether every lane of a warp that runs this together wants to do something costly now, so that
 /// the costly code runs with all of them rather than a few at a time; on the CPU (a ray is its own
 /// warp) whether this one does. Every lane that reaches the call must make it, wanting or not.
-/// Half or a quarter of the lanes were measured too: all is fastest (measured: docs/gpu_notes.md).
+/// Half or a quarter of the lanes were measured too: all is fastest (docs/gpu_notes.md § Deferred wall tests).
 URBIS_HD inline bool warpAll(bool wants) {
 #if URBIS_GPU_CODE
     return __all_sync(__activemask(), wants);
@@ -264,7 +264,7 @@ URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, HitRe
         current = kNoItem;
 #if URBIS_GPU_CODE
         // A sorting network, then the keys pushed in order; a lane's child by selects (`at`). 3-7 %
-        // faster on the H200 than ranks (measured: docs/gpu_notes.md).
+        // faster on the H200 than ranks (docs/gpu_notes.md § Traversal step).
         sortFour(key);
         for (int i = kBvhWidth - 1; i >= 0; --i) {
             if (key[i] == ~0u) continue;

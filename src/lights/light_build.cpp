@@ -24,12 +24,8 @@ struct BuiltLights {
 /// lights' power is their radiance through a disk of that radius (pbrt-v4 DistantLight::Phi).
 float sceneRadius(const Scene& scene) {
     Bounds3f bounds;
-    for (const Triangle& t : scene.triangles) {
-        bounds.extend(t.p0);
-        bounds.extend(t.p1);
-        bounds.extend(t.p2);
-    }
-    for (const WallRecord& wall : scene.walls) bounds.extend(wallTileBounds(wall));
+    for (const Triangle& t : scene.triangles) bounds.extend(primBounds(t));
+    for (const WallRecord& wall : scene.walls) bounds.extend(primBounds(wall));
     return bounds.empty() ? 1.0f : fmaxf(1.0f, 0.5f * length(bounds.extent()));
 }
 

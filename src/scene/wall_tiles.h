@@ -8,7 +8,7 @@
 namespace urbis {
 
 /// How walls are split into BVH primitives: tiles of at most this many slots x floors (0: no limit).
-/// The default keeps whole walls: on the CPU, tiles measured slower (docs/facades.md).
+/// The default keeps whole walls: on the CPU, tiles measured slower (docs/facades.md § BVH tiles).
 struct WallTileSize {
     int slots = 0, floors = 0;
 };
