@@ -1,15 +1,17 @@
 #include "description/scene_checks.h"
 
-#include <cstdio>
+#include <charconv>
 
 namespace urbis {
 
 std::optional<WallTileSize> wallTileSizeOf(const std::string& text) {
     if (text == "whole") return WallTileSize{};
     WallTileSize size;
-    char x = 0, rest = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &size.slots, &x, &size.floors, &rest) != 3 || x != 'x' ||
-        size.slots < 1 || size.floors < 1 || size.slots > 0xffff || size.floors > 0xffff)
+    const char* end = text.data() + text.size();
+    auto [x, ec] = std::from_chars(text.data(), end, size.slots);
+    if (ec != std::errc() || x == end || *x != 'x') return std::nullopt;
+    auto [last, ec2] = std::from_chars(x + 1, end, size.floors);
+    if (ec2 != std::errc() || last != end || size.slots < 1 || size.floors < 1 || size.slots > 0xffff || size.floors > 0xffff)
         return std::nullopt;
     return size;
 }

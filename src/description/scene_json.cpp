@@ -23,11 +23,14 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-/// The shortest decimal text that reads back as `value`.
+/// The shortest decimal text that reads back as `value`, without an exponent (1000000, not 1e+06).
 template <typename T>
 std::string numberText(T value) {
-    char text[64];
-    auto [end, ec] = std::to_chars(text, text + sizeof text, value);
+    char text[400];
+    std::to_chars_result result;
+    if constexpr (std::is_floating_point_v<T>) result = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed);
+    else result = std::to_chars(text, text + sizeof text, value);
+    auto [end, ec] = result;
     return ec == std::errc() ? std::string(text, end) : std::to_string(value);
 }
 
