@@ -114,6 +114,8 @@ TEST(CliSceneFile, StatsReportPeakMemory) {
     const nlohmann::json stats = nlohmann::json::parse(readFile(dir / "stats.json"));
     EXPECT_GT(stats["peak_host_bytes"].get<size_t>(), size_t(1) << 20) << "a process holds more than a MiB";
     EXPECT_TRUE(stats["peak_device_bytes"].is_null()) << "the CPU rendered";
+    EXPECT_GT(stats["resident_host_bytes"].get<size_t>(), 0u);
+    EXPECT_LE(stats["resident_host_bytes"].get<size_t>(), stats["peak_host_bytes"].get<size_t>());
 }
 
 TEST(CliSceneFile, SaveSceneOutputIsChecked) {

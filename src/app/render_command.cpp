@@ -173,8 +173,10 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
                           {"triangle_info", device.memory.triangleInfo}, {"prim_refs", device.memory.primRefs},
                           {"walls", device.memory.walls}, {"materials", device.memory.materials},
                           {"film", device.memory.film}, {"total", device.memory.total()}}},
-        // The high-water mark of the whole run (VmHWM), and the GpuScene's total where the GPU rendered.
+        // The high-water mark of the whole run (VmHWM), what is resident once rendered (the city and
+        // its mesh released), and the GpuScene's total where the GPU rendered.
         {"peak_host_bytes", peakHostBytes()},
+        {"resident_host_bytes", residentHostBytes()},
         {"peak_device_bytes", device.device == "cuda" ? nlohmann::json(device.memory.total()) : nlohmann::json(nullptr)},
         {"seconds", {{"import", prepared.secondsImport}, {"citygen", prepared.secondsCitygen}, {"bvh", prepared.secondsBvh},
                      {"render", counters.seconds}, {"write", secondsWrite}}},
