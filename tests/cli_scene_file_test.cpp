@@ -145,3 +145,19 @@ TEST(CliSceneFile, TheDocumentedExampleRendersAndOverridesChangeTheImage) {
     EXPECT_FALSE(plain == readFile(dir / "red.png")) << "wall colours by type left the image as it was";
     EXPECT_FALSE(plain == readFile(dir / "ground.png")) << "the ground's albedo left the image as it was";
 }
+
+TEST(CliSceneFile, BenchTakesSceneFilesToo) {
+    const fs::path dir = testDir();
+    const std::string bench = "bench --device cpu --repeats 1 --buildings 12 --width 24 --height 16 ";
+    CommandResult saved = runUrbis(bench + "--save-scene b.json", dir);
+    ASSERT_EQ(saved.exitCode, 0) << saved.err;
+    const nlohmann::json scene = nlohmann::json::parse(readFile(dir / "b.json"));
+    EXPECT_EQ(scene["integrator"]["spp"], 1) << "bench's own default";
+    EXPECT_EQ(scene["film"]["width"], 24);
+    CommandResult fromFile = runUrbis("bench --device cpu --repeats 1 --scene b.json --spp 2 --json r.json", dir);
+    ASSERT_EQ(fromFile.exitCode, 0) << fromFile.err;
+    const nlohmann::json results = nlohmann::json::parse(readFile(dir / "r.json"));
+    EXPECT_EQ(results["width"], 24);
+    EXPECT_EQ(results["buildings"], 12);
+    EXPECT_EQ(results["frame"]["spp"], 2) << "the command line over the file";
+}
