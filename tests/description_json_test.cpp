@@ -48,7 +48,7 @@ SceneDescription unusualScene() {
     d.geometry.modes = GeometryModes{Representation::Triangles, Representation::Plain};
     d.geometry.wallTiles = "4x2";
     d.integrator = IntegratorDescription{"path", 64, 9, 12, 4, 0.8f, "uniform"};
-    d.film = FilmDescription{640, 480, 1.25f, "out/city.png"};
+    d.film = FilmDescription{640, 480, 1.25f, "out/city.png", {"depth", "albedo"}};
     return d;
 }
 
@@ -80,7 +80,7 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "geometry", "geometry.walls", "geometry.roofs", "geometry.wall_tiles",
         "integrator", "integrator.kind", "integrator.spp", "integrator.seed", "integrator.max_depth",
         "integrator.rr_depth", "integrator.rr_survival", "integrator.light_sampler",
-        "film", "film.width", "film.height", "film.exposure", "film.output"};
+        "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers"};
     EXPECT_EQ(keys, expected);
     // The geographic camera's own keys, once it is set.
     SceneDescription geo;
@@ -111,8 +111,12 @@ TEST(DescriptionJson, RoundTripKeepsEveryField) {
     EXPECT_EQ(back.materials.city.glassIor, 1.33f);
     EXPECT_EQ(back.geometry.modes.roofs, Representation::Plain);
     EXPECT_EQ(back.integrator.lightSampler, "uniform");
+    EXPECT_EQ(back.film.layers, (std::vector<std::string>{"depth", "albedo"}));
     // Floats are written as their shortest decimal text.
     EXPECT_NE(sceneFileText(d).find("\"metres_per_level\": 3.3,"), std::string::npos) << sceneFileText(d);
+    // Arrays of numbers and of names on one line each.
+    EXPECT_NE(sceneFileText(d).find("\"layers\": [\"depth\", \"albedo\"]"), std::string::npos) << sceneFileText(d);
+    EXPECT_NE(sceneFileText(d).find("\"irradiance\": [1.0, 2.0, 3.0]"), std::string::npos) << sceneFileText(d);
 }
 
 TEST(DescriptionJson, MissingKeysKeepTheirDefaults) {
@@ -150,6 +154,9 @@ TEST(DescriptionJson, ProblemsNameTheFileAndTheKeyPath) {
         {R"({"materials": {"wall_colour_by_type": {"castle": [1, 1, 1]}}})",
          "scene.json: materials.wall_colour_by_type.castle: unknown building type"},
         {R"({"materials": {"ground": {"albedo": [0.1, 0.1, 2]}}})", "scene.json: materials.ground.albedo[2]: 2 is out of range 0..1"},
+        {R"({"film": {"layers": ["albedo", "beauty"]}})", "scene.json: film.layers[1]: expected one of albedo, normal"},
+        {R"({"film": {"layers": ["depth", "depth"]}})", "scene.json: film.layers[1]: named twice"},
+        {R"({"film": {"layers": "depth"}})", "scene.json: film.layers: expected an array of names"},
         {"[1, 2]", "scene.json: expected a JSON object"},
     };
     for (const auto& [text, message] : cases) {

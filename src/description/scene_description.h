@@ -11,9 +11,11 @@
 
 #include <array>
 #include <cstdint>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace urbis {
 
@@ -95,10 +97,15 @@ struct IntegratorDescription {
     std::string lightSampler = "power";
 };
 
+/// The AOV layers a film may keep beside its colour (the layer groups of an .exr output).
+inline constexpr const char* kFilmLayers[] = {"albedo", "normal", "depth", "position", "id", "samples"};
+
 struct FilmDescription {
     uint32_t width = 1280, height = 720;
     float exposure = -0.6f;            ///< stops
     std::string output = "urbis.png"; ///< the image; its extension picks the format
+    /// Layers of kFilmLayers an .exr output holds besides RGBA (a .png holds none).
+    std::vector<std::string> layers{std::begin(kFilmLayers), std::end(kFilmLayers)};
 };
 
 struct SceneDescription {

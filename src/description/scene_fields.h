@@ -22,6 +22,7 @@ inline constexpr std::pair<const char*, Representation> kRepresentationNames[] =
 ///   v.optionalArray(key, optional, lo, hi)      N numbers in [lo, hi], or null
 ///   v.text(key, string)                         any string
 ///   v.choice(key, string, names)                one of `names`
+///   v.choiceList(key, strings, names)           an array of distinct `names`
 ///   v.enumeration(key, value, pairs)            one of the names of `pairs`
 ///   v.colourMap(key, map)                       an object of building type -> colour
 template <typename Description, typename Visitor>
@@ -88,6 +89,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.number("height", d.film.height, 1u, kMaxImageSide);
         v.number("exposure", d.film.exposure, -20.0f, 20.0f);
         v.text("output", d.film.output);
+        v.choiceList("layers", d.film.layers, std::span(kFilmLayers));
     });
 }
 

@@ -130,6 +130,24 @@ public:
         fail(key, "expected one of " + list);
     }
 
+    void choiceList(const char* key, std::vector<std::string>& value, std::span<const char* const> names) {
+        const json* node = child(key);
+        if (!node) return;
+        std::string list;
+        for (const char* name : names) list += (list.empty() ? "" : ", ") + std::string(name);
+        if (!node->is_array()) fail(key, "expected an array of names out of " + list);
+        std::vector<std::string> chosen;
+        for (size_t i = 0; i < node->size(); ++i) {
+            const json& item = (*node)[i];
+            const std::string path = key + ("[" + std::to_string(i) + "]");
+            const bool known = item.is_string() && std::find(names.begin(), names.end(), item.get<std::string>()) != names.end();
+            if (!known) fail(path, "expected one of " + list);
+            if (std::find(chosen.begin(), chosen.end(), item.get<std::string>()) != chosen.end()) fail(path, "named twice");
+            chosen.push_back(item.get<std::string>());
+        }
+        value = std::move(chosen);
+    }
+
     template <typename E, typename Names>
     void enumeration(const char* key, E& value, const Names& names) {
         const json* node = child(key);
@@ -262,6 +280,10 @@ public:
     void text(const char* key, const std::string& value) { (*current_)[key] = value; }
     void choice(const char* key, const std::string& value, std::span<const char* const>) { (*current_)[key] = value; }
 
+    void choiceList(const char* key, const std::vector<std::string>& value, std::span<const char* const>) {
+        (*current_)[key] = value;
+    }
+
     template <typename E, typename Names>
     void enumeration(const char* key, const E& value, const Names& names) {
         for (const auto& [name, e] : names)
@@ -284,30 +306,46 @@ private:
     json* current_ = &root;
 };
 
+/// The end of the JSON string that opens at text[i] (its closing quote).
+size_t stringEnd(const std::string& text, size_t i) {
+    for (++i; i < text.size() && text[i] != '"'; ++i)
+        if (text[i] == '\\') ++i;
+    return i;
+}
+
 /// `text` (JSON as dump(2) writes it) with each array that holds no object or array on one line:
 /// [0.1, 0.11, 0.09] rather than a number a line.
 std::string withFlatArrays(const std::string& text) {
     std::string out;
     out.reserve(text.size());
     for (size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (c == '"') {  // copy a string whole: brackets in it are text
-            const size_t start = i;
-            for (++i; i < text.size() && text[i] != '"'; ++i)
-                if (text[i] == '\\') ++i;
-            out.append(text, start, i - start + 1);
+        if (text[i] == '"') {  // a string whole: brackets in it are text
+            const size_t end = stringEnd(text, i);
+            out.append(text, i, end - i + 1);
+            i = end;
             continue;
         }
-        const size_t end = c == '[' ? text.find_first_of("[]{}\"", i + 1) : std::string::npos;
-        if (end == std::string::npos || text[end] != ']') {
-            out += c;
+        size_t end = i + 1;
+        if (text[i] == '[')
+            for (; end < text.size() && !std::strchr("[]{}", text[end]); ++end)
+                if (text[end] == '"') end = stringEnd(text, end);
+        if (text[i] != '[' || end >= text.size() || text[end] != ']') {
+            out += text[i];
             continue;
         }
-        std::string flat = "[";
-        for (size_t k = i + 1; k < end; ++k)
-            if (text[k] == ',') flat += ", ";
-            else if (text[k] != ' ' && text[k] != '\n') flat += text[k];
-        out += flat + "]";
+        out += '[';
+        for (size_t k = i + 1; k < end; ++k) {
+            if (text[k] == '"') {
+                const size_t close = stringEnd(text, k);
+                out.append(text, k, close - k + 1);
+                k = close;
+            } else if (text[k] == ',') {
+                out += ", ";
+            } else if (text[k] != ' ' && text[k] != '\n') {
+                out += text[k];
+            }
+        }
+        out += ']';
         i = end;
     }
     return out;
