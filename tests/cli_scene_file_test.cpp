@@ -78,12 +78,14 @@ TEST(CliSceneFile, BadSceneFilesGiveOneLineAndExitOne) {
     write(dir / "unknown.json", R"({"film": {"widht": 10}})");
     write(dir / "type.json", R"({"camera": {"fov": "wide"}})");
     write(dir / "range.json", R"({"film": {"width": 0}})");
+    fs::create_directories(dir / "folder.json");
     const std::pair<const char*, const char*> cases[] = {
         {"malformed.json", "malformed.json: malformed JSON at line 1, column "},
         {"unknown.json", "unknown.json: film.widht: unknown key"},
         {"type.json", "type.json: camera.fov: expected a number"},
         {"range.json", "range.json: film.width: 0 is out of range 1..65536"},
         {"none.json", "none.json: cannot open the scene file"},
+        {"folder.json", "folder.json: cannot read the scene file (a folder)"},
     };
     for (const auto& [file, message] : cases) {
         CommandResult r = runUrbis(std::string("render --scene ") + file + " --out out.png", dir);

@@ -376,6 +376,8 @@ json sceneToJson(const SceneDescription& description) {
 SceneDescription readSceneFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open the scene file (" + std::strerror(errno) + ")");
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot read the scene file (a folder)");
     std::stringstream text;
     text << in.rdbuf();
     if (in.bad()) throw InputError(path + ": cannot read the scene file");
