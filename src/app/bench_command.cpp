@@ -4,6 +4,8 @@
 #include "app/memory_limit.h"
 #include "app/output_paths.h"
 #include "app/render_device.h"
+#include "description/scene_json.h"
+#include "description/scene_parts.h"
 #include "gpu/gpu_backend.h"
 #include "integrators/path_tracer.h"
 #include "film/film_output.h"
@@ -21,27 +23,31 @@
 
 namespace urbis {
 
-void addBenchCommand(CLI::App& app, BenchOptions& o) {
+SceneDescription benchDefaultScene() {
+    SceneDescription d;
+    d.film.width = 1920;
+    d.film.height = 1080;
+    d.integrator.spp = 1;
+    d.source.buildings = 100000;
+    return d;
+}
+
+BenchOptions BenchCommandLine::resolve() const {
+    BenchOptions o = options;
+    o.render.scene = scene.resolve();
+    o.render.saveSceneFile = scene.saveScenePath();
+    return o;
+}
+
+void addBenchCommand(CLI::App& app, BenchCommandLine& line) {
     CLI::App* cmd = app.add_subcommand("bench", "Rays/s of primary, diffuse and shadow rays and the time of a 1 spp "
                                                 "frame, on the GPU or the CPU (kernel time, median of --repeats)");
-    RenderOptions& r = o.scene;
-    r.settings.width = 1920;
-    r.settings.height = 1080;
-    r.settings.spp = 1;
-    r.buildings = 100000;
+    BenchOptions& o = line.options;
+    RunOptions& r = o.render.run;
     r.device = "cuda";
+    line.scene.addOptions(*cmd, {"--osm", "--buildings", "--bbox", "--width", "--height", "--spp", "--seed", "--sun",
+                                 "--camera", "--camera-geo", "--geometry"});
     cmd->add_option("--device", r.device, "cuda, cpu, or auto")->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
-    cmd->add_option("--osm", r.osmFile, "OpenStreetMap file (default: the generated city)");
-    cmd->add_option("--buildings", r.buildings, "Buildings in the generated city")->check(CLI::Range(uint64_t(1), uint64_t(5000000)))->capture_default_str();
-    cmd->add_option("--bbox", r.bbox, "Crop OSM to MINLON,MINLAT,MAXLON,MAXLAT");
-    cmd->add_option("--width", r.settings.width, "Width of the ray batches and the frame")->check(CLI::Range(1u, kMaxImageSide))->capture_default_str();
-    cmd->add_option("--height", r.settings.height, "Height of the ray batches and the frame")->check(CLI::Range(1u, kMaxImageSide))->capture_default_str();
-    cmd->add_option("--spp", r.settings.spp, "Samples per pixel of the timed frame")->check(CLI::Range(1, 1 << 16))->capture_default_str();
-    cmd->add_option("--seed", r.settings.seed, "Seed of the city and of the sampler")->capture_default_str();
-    cmd->add_option("--sun", r.sun, "ELEVATION,AZIMUTH of the sun in degrees")->capture_default_str();
-    cmd->add_option("--camera", r.camera, "X,Y,Z,TX,TY,TZ: position and target in world metres");
-    cmd->add_option("--camera-geo", r.cameraGeo, "LON,LAT,ALTITUDE,HEADING,PITCH (OSM only)");
-    cmd->add_option("--geometry", r.geometry, "procedural (facades), triangles (their twin) or plain (no facades)")->capture_default_str();
     cmd->add_option("--threads", r.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
     cmd->add_option("--repeats", o.repeats, "Timed runs per measurement (0: 20 on the GPU, 3 on the CPU)")->check(CLI::Range(0, 10000))->capture_default_str();
     cmd->add_option("--warmup", o.warmup, "Untimed runs first (GPU)")->check(CLI::Range(0, 1000))->capture_default_str();
@@ -145,13 +151,16 @@ struct Row {
 } // namespace
 
 void runBench(const BenchOptions& o) {
-    const RenderOptions& r = o.scene;
+    const RunOptions& r = o.render.run;
+    const RenderSettings settings = renderSettingsOf(o.render.scene.integrator, o.render.scene.film);
     size_t threads = r.threads ? r.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
     checkOutputPath("--json", o.jsonFile, {".json"});
+    checkOutputPath("--save-scene", o.render.saveSceneFile, {".json"});
+    checkDistinctOutputs("--json", o.jsonFile, "--save-scene", o.render.saveSceneFile);
     const size_t limit = memoryLimit(r.maxMemory);
-    requireMemory(size_t(r.settings.width) * r.settings.height * kBenchBytesPerPixel + hostFilmBytes(r.settings.width, r.settings.height),
-                  limit, "benchmarking " + std::to_string(r.settings.width) + "x" + std::to_string(r.settings.height) + " rays");
+    requireMemory(size_t(settings.width) * settings.height * kBenchBytesPerPixel + hostFilmBytes(settings.width, settings.height),
+                  limit, "benchmarking " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " rays");
     if (!o.jsonFile.empty()) {
         std::FILE* probe = std::fopen((o.jsonFile + ".tmp").c_str(), "w");
         if (!probe) throw InputError(o.jsonFile + ": cannot write here", FailureKind::Output);
@@ -169,9 +178,10 @@ void runBench(const BenchOptions& o) {
     const bool onGpu = device == "cuda";
     const int repeats = o.repeats > 0 ? o.repeats : (onGpu ? 20 : 3);
 
-    PreparedScene prepared = prepareScene(r, limit);
+    PreparedScene prepared = prepareScene(o.render.scene, r.strict, limit);
+    if (!o.render.saveSceneFile.empty()) writeSceneFile(o.render.scene, o.render.saveSceneFile);
     const Scene& scene = prepared.scene;
-    RayBatches batches = makeRays(scene, prepared.camera, r.settings);
+    RayBatches batches = makeRays(scene, prepared.camera, settings);
     const std::string deviceName = onGpu ? gpu.name : cpuModelName();
     if (r.verbose || r.device == "cuda")
         std::fprintf(stderr, "urbis: benchmarking on %s (%s)\n", deviceName.c_str(), device.c_str());
@@ -181,7 +191,7 @@ void runBench(const BenchOptions& o) {
                              {"shadow", batches.shadow.size(), {}}};
     const std::vector<Ray>* batch[3] = {&batches.primary, &batches.diffuse, &batches.shadow};
     std::vector<float> frameMs;
-    RenderSettings frame = r.settings;
+    RenderSettings frame = settings;
     GpuMemory memory;
     if (onGpu) {
         size_t extra = batches.primary.size() * (sizeof(Ray) + sizeof(SurfaceHit)) +
@@ -196,10 +206,10 @@ void runBench(const BenchOptions& o) {
         frameMs = timeCpu(repeats, [&] { renderCpu(scene.view(), prepared.camera, frame, false, counters); });
     }
 
-    std::printf("urbis bench: %s, %zu triangles, %zu BVH nodes; %s (%s)\n", prepared.city.source.c_str(),
+    std::printf("urbis bench: %s, %zu triangles, %zu BVH nodes; %s (%s)\n", prepared.summary.source.c_str(),
                 scene.triangles.size(), scene.nodes.size(), deviceName.c_str(), device.c_str());
     std::printf("%-28s %10s %11s %11s %14s\n", "measurement", "rays", "median ms", "min ms", "rays/s");
-    nlohmann::json json = {{"source", prepared.city.source}, {"buildings", prepared.city.buildings.size()},
+    nlohmann::json json = {{"source", prepared.summary.source}, {"buildings", prepared.summary.buildings},
                            {"triangles", scene.triangles.size()}, {"walls", scene.walls.size()}, {"bvh_nodes", scene.nodes.size()},
                            {"device", device}, {"device_name", deviceName}, {"repeats", repeats},
                            {"warmup", onGpu ? o.warmup : 0}, {"width", frame.width}, {"height", frame.height},

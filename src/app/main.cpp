@@ -37,22 +37,23 @@ int main(int argc, char** argv) {
                  "  urbis render --osm city.osm.pbf --stats stats.json\n"
                  "  urbis render --osm city.osm.pbf --camera-geo -122.397,37.789,300,20,-25\n"
                  "  urbis render --device cuda --spp 256 --out gpu.png\n"
+                 "  urbis render --osm city.osm.pbf --save-scene city.json   # and later: urbis render --scene city.json\n"
                  "  urbis bench --device cuda --buildings 100000 --json bench.json\n"
                  "  urbis inspect city.osm.pbf --json --ids\n"};
     app.footer(kExitCodes);
     app.set_version_flag("--version", "urbis " URBIS_VERSION);
     app.require_subcommand(1);
-    urbis::RenderOptions render;
+    urbis::RenderCommandLine render;
     urbis::InspectOptions inspect;
-    urbis::BenchOptions bench;
+    urbis::BenchCommandLine bench;
     urbis::addRenderCommand(app, render);
     urbis::addInspectCommand(app, inspect);
     urbis::addBenchCommand(app, bench);
     try {
         app.parse(argc, argv);
-        if (app.got_subcommand("render")) urbis::runRender(render);
+        if (app.got_subcommand("render")) urbis::runRender(render.resolve());
         if (app.got_subcommand("inspect")) urbis::runInspect(inspect);
-        if (app.got_subcommand("bench")) urbis::runBench(bench);
+        if (app.got_subcommand("bench")) urbis::runBench(bench.resolve());
     } catch (const CLI::Success& e) {
         return app.exit(e);  // --help, --help-all, --version
     } catch (const CLI::ParseError& e) {

@@ -40,11 +40,12 @@ private:
 };
 
 /// The materials of FacadeMaterial, in its order.
-void addFacadeMaterials(std::vector<Material>& out) {
-    Material glass{Vec3f{0.85f, 0.9f, 0.9f}, MaterialKind::Glass};
+void addFacadeMaterials(const CityMaterials& city, std::vector<Material>& out) {
+    Material glass{city.glassTransmittance, MaterialKind::Glass};
+    glass.ior = city.glassIor;
     Material roomDark{Vec3f{0.12f, 0.11f, 0.10f}};
     Material roomLit{Vec3f{0.45f, 0.40f, 0.33f}};
-    roomLit.emission = Vec3f{0.16f, 0.12f, 0.08f};  // indoor light by day: far below sunlit walls
+    roomLit.emission = city.litRoomEmission;
     Material slab{Vec3f{0.5f, 0.5f, 0.48f}};
     Material railing{Vec3f{0.04f, 0.04f, 0.045f}, MaterialKind::Glossy, Vec3f{0.4f, 0.4f, 0.42f}, 60.0f};
     Material mullion{Vec3f{0.1f, 0.1f, 0.11f}, MaterialKind::Glossy, Vec3f{0.35f, 0.35f, 0.37f}, 120.0f};
@@ -145,7 +146,8 @@ void meshWallTwins(const CityMeshOptions& options, CityMesh& out) {
 CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     CityMesh out;
     MaterialTable table;
-    uint32_t groundMaterial = table.indexOf(Rgb{0.10f, 0.11f, 0.09f});
+    const Vec3f ground = options.materials.groundAlbedo;
+    uint32_t groundMaterial = table.indexOf(Rgb{ground.x, ground.y, ground.z});
     std::vector<TriangleInfo> wallInfo(city.buildings.size()), roofInfo(city.buildings.size());
     std::vector<WallContext> facades(city.buildings.size());
     for (size_t i = 0; i < city.buildings.size(); ++i) {
@@ -156,7 +158,7 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     }
     out.materials = std::move(table.materials);
     const uint32_t facadeMaterials = uint32_t(out.materials.size());
-    addFacadeMaterials(out.materials);
+    addFacadeMaterials(options.materials, out.materials);
     for (WallContext& f : facades) {
         f.facadeMaterials = facadeMaterials;
         f.proceduralParapets = options.geometry.roofs == Representation::Procedural;

@@ -14,8 +14,17 @@
 
 namespace urbis {
 
+/// The city's materials that follow no building's colour (a scene description may change them).
+struct CityMaterials {
+    Vec3f groundAlbedo{0.10f, 0.11f, 0.09f};
+    Vec3f glassTransmittance{0.85f, 0.9f, 0.9f};   ///< the windows' panes (FacadeMaterial::Glass)
+    float glassIor = 1.5f;
+    Vec3f litRoomEmission{0.16f, 0.12f, 0.08f};    ///< lit rooms behind windows: indoor light by day, far below sunlit walls
+};
+
 struct CityMeshOptions {
     GeometryModes geometry;   ///< walls=plain: each building a closed mass model (every edge shared)
+    CityMaterials materials;
     /// Bytes the triangle twin may take to build; 0: the memory available now.
     size_t memoryLimit = 0;
 };

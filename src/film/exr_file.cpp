@@ -85,14 +85,17 @@ void writeExr(const Film& film, const std::string& path, const ExrOptions& optio
     AovImages aovs;
     if (film.hasAovs()) {
         aovs = resolveAovs(film);
-        channels.addVec3("albedo.", {"R", "G", "B"}, aovs.albedo, half);
-        channels.addVec3("normal.", {"X", "Y", "Z"}, aovs.normal, half);
+        const uint32_t layers = options.layers;
+        if (layers & kAlbedoLayer) channels.addVec3("albedo.", {"R", "G", "B"}, aovs.albedo, half);
+        if (layers & kNormalLayer) channels.addVec3("normal.", {"X", "Y", "Z"}, aovs.normal, half);
         // Metres at city scale need float: half steps by 2 m between 2 and 4 km.
-        channels.addVec3("position.", {"X", "Y", "Z"}, aovs.position, false);
-        channels.addFloat("depth.Z", aovs.depth.data(), sizeof(float), false);
-        channels.addUint("id.object", aovs.object);
-        channels.addUint("id.part", aovs.part);
-        channels.addUint("samples", aovs.samples);
+        if (layers & kPositionLayer) channels.addVec3("position.", {"X", "Y", "Z"}, aovs.position, false);
+        if (layers & kDepthLayer) channels.addFloat("depth.Z", aovs.depth.data(), sizeof(float), false);
+        if (layers & kIdLayer) {
+            channels.addUint("id.object", aovs.object);
+            channels.addUint("id.part", aovs.part);
+        }
+        if (layers & kSamplesLayer) channels.addUint("samples", aovs.samples);
     }
 
     writeThroughTemporary(path, [&](const std::string& temporary) -> std::string {

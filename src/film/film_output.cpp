@@ -21,7 +21,9 @@ FilmFormat filmFormatOf(const std::string& path) {
                      FailureKind::Usage);
 }
 
-bool filmOutputNeedsAovs(const std::string& path) { return filmFormatOf(path) == FilmFormat::Exr; }
+bool filmOutputNeedsAovs(const std::string& path, uint32_t exrLayers) {
+    return filmFormatOf(path) == FilmFormat::Exr && exrLayers != 0;
+}
 
 Rgb8Image toneMap(const Film& film, float exposureEv) {
     Rgb8Image out{film.width, film.height, std::vector<uint8_t>(film.pixels() * 3)};
@@ -36,7 +38,7 @@ Rgb8Image toneMap(const Film& film, float exposureEv) {
 void writeFilm(const Film& film, const std::string& path, const FilmOutputOptions& options) {
     switch (filmFormatOf(path)) {
     case FilmFormat::Png: return writePng(toneMap(film, options.exposureEv), path);
-    case FilmFormat::Exr: return writeExr(film, path, ExrOptions{std::exp2(options.exposureEv), options.exrFloat});
+    case FilmFormat::Exr: return writeExr(film, path, ExrOptions{std::exp2(options.exposureEv), options.exrFloat, options.exrLayers});
     }
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "film/film.h"
+#include "film/film_layers.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -16,14 +17,16 @@ enum class FilmFormat { Png, Exr };
 struct FilmOutputOptions {
     float exposureEv = 0.0f;   ///< stops: PNG before its tone curve, EXR as a plain scale
     bool exrFloat = false;     ///< EXR colour, albedo and normal as float rather than half
+    uint32_t exrLayers = kAllFilmLayers;  ///< the AOV layer groups an EXR holds (film_layers.h)
 };
 
 /// The format of `path` by its extension, in any case. Throws a usage InputError naming the path
 /// for any other extension.
 FilmFormat filmFormatOf(const std::string& path);
 
-/// Whether the file at `path` holds AOVs (EXR), so that the render must run the AOV pass.
-bool filmOutputNeedsAovs(const std::string& path);
+/// Whether the file at `path` holds AOVs (an EXR with any of the `exrLayers`), so that the render
+/// must run the AOV pass.
+bool filmOutputNeedsAovs(const std::string& path, uint32_t exrLayers = kAllFilmLayers);
 
 /// The film's mean radiance at `exposureEv` (stops) through the filmic curve to 8-bit sRGB, pixel
 /// by pixel (no image of means in between).

@@ -1,0 +1,172 @@
+#include "app/scene_options.h"
+
+#include "app/option_parsing.h"
+#include "description/scene_checks.h"
+#include "description/scene_json.h"
+#include "layout/city_layout.h"
+#include "base/input_error.h"
+
+#include <algorithm>
+
+namespace urbis {
+
+namespace {
+
+Vec3f vec3Of(const std::vector<double>& v, size_t first) {
+    return Vec3f{float(v[first]), float(v[first + 1]), float(v[first + 2])};
+}
+
+} // namespace
+
+SceneCommandLine::SceneCommandLine(SceneDescription defaults) : defaults_(std::move(defaults)), values_(defaults_) {}
+
+template <typename T, typename Apply>
+CLI::Option* SceneCommandLine::bind(CLI::App& cmd, const std::string& name, T& storage, const std::string& help,
+                                    Apply apply) {
+    if (!only_.empty() && std::find(only_.begin(), only_.end(), name) == only_.end()) return nullptr;
+    CLI::Option* option = cmd.add_option(name, storage, help);
+    overrides_.emplace_back(option, [&storage, apply](SceneDescription& d) { apply(d, storage); });
+    return option;
+}
+
+void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::string_view> only) {
+    only_.assign(only.begin(), only.end());
+    cmd.add_option("--scene", sceneFile_,
+                   "Scene file (.json, docs/scene_files.md) to render; the options given here override its keys");
+    cmd.add_option("--save-scene", saveScene_,
+                   "Write the scene this command amounts to (every key) to a .json file, then go on");
+    SceneDescription& v = values_;
+    const auto range = [](CLI::Option* option, auto lo, auto hi) {
+        if (option) option->check(CLI::Range(lo, hi))->capture_default_str();
+    };
+    const auto withDefault = [](CLI::Option* option) {
+        if (option) option->capture_default_str();
+    };
+
+    // source
+    bind(cmd, "--osm", v.source.osm, "OpenStreetMap file: .osm, .osm.pbf, .osm.bz2, .osm.gz (default: the generated city)",
+         [](SceneDescription& d, const std::string& osm) { d.source.osm = osm; });
+    bind(cmd, "--bbox", text_.bbox, "Crop OSM to MINLON,MINLAT,MAXLON,MAXLAT (default: the file's header box)",
+         [](SceneDescription& d, const std::string& text) { d.source.bbox = parseBbox(text); });
+    const LayoutParams layout;
+    bind(cmd, "--building-height-range", text_.heightRange,
+         "MIN:MAX metres, seeded uniform, for OSM buildings without height or levels tags (without it their heights "
+         "are estimated from tagged neighbours of their type and a table of types) and for the generated city (default " +
+             std::to_string(int(layout.minBuildingHeight)) + ":" + std::to_string(int(layout.maxBuildingHeight)) + ")",
+         [](SceneDescription& d, const std::string& text) {
+             std::vector<double> r = parseNumberList("--building-height-range", text, ':', 2, 2);
+             if (!(r[0] >= 0.0 && r[0] <= r[1] && r[1] <= 1000.0))
+                 throw InputError("--building-height-range: need 0 <= MIN <= MAX <= 1000 metres, got '" + text + "'",
+                                  FailureKind::Usage);
+             d.source.heightRange = std::array<float, 2>{float(r[0]), float(r[1])};
+         });
+    range(bind(cmd, "--metres-per-level", v.source.metresPerLevel, "Storey height for building:levels",
+               [](SceneDescription& d, float m) { d.source.metresPerLevel = m; }),
+          1.0, 20.0);
+    range(bind(cmd, "--height-scale", v.source.heightScale, "Multiply every building's height (and min height)",
+               [](SceneDescription& d, float s) { d.source.heightScale = s; }),
+          0.05, 50.0);
+    range(bind(cmd, "--buildings", v.source.buildings, "Buildings in the generated city",
+               [](SceneDescription& d, uint64_t n) { d.source.buildings = n; }),
+          uint64_t(1), kMaxDescribedBuildings);
+    withDefault(bind(cmd, "--seed", v.integrator.seed, "Seed of the city and of the sampler",
+                     [](SceneDescription& d, uint32_t seed) { d.source.seed = d.integrator.seed = seed; }));
+
+    // camera
+    bind(cmd, "--camera", text_.camera, "X,Y,Z,TX,TY,TZ: position and target in world metres (x east, y up, z south)",
+         [](SceneDescription& d, const std::string& text) {
+             std::vector<double> c = parseNumberList("--camera", text, ',', 6, 6);
+             d.camera.position = vec3Of(c, 0);
+             d.camera.target = vec3Of(c, 3);
+             d.camera.geo.reset();
+         });
+    CLI::Option* geo =
+        bind(cmd, "--camera-geo", text_.cameraGeo, "LON,LAT,ALTITUDE,HEADING,PITCH (OSM only; degrees, metres)",
+             [](SceneDescription& d, const std::string& text) {
+                 std::vector<double> c = parseNumberList("--camera-geo", text, ',', 5, 5);
+                 d.camera.geo = GeoCameraDescription{c[0], c[1], float(c[2]), float(c[3]), float(c[4])};
+                 d.camera.position.reset();
+                 d.camera.target.reset();
+             });
+    if (geo && cmd.get_option_no_throw("--camera")) geo->excludes("--camera");
+    range(bind(cmd, "--fov", v.camera.fov, "Vertical field of view, degrees",
+               [](SceneDescription& d, float fov) { d.camera.fov = fov; }),
+          1.0, 170.0);
+
+    // sun
+    text_.sun = std::to_string(int(v.sun.elevation)) + "," + std::to_string(int(v.sun.azimuth));
+    withDefault(bind(cmd, "--sun", text_.sun, "ELEVATION,AZIMUTH of the sun in degrees (azimuth clockwise from north)",
+                     [](SceneDescription& d, const std::string& text) {
+                         std::vector<double> s = parseNumberList("--sun", text, ',', 2, 2);
+                         if (!(s[0] >= -90.0 && s[0] <= 90.0))
+                             throw InputError("--sun: elevation must be in [-90, 90] degrees", FailureKind::Usage);
+                         if (!(s[1] >= -360.0 && s[1] <= 360.0))
+                             throw InputError("--sun: azimuth must be in [-360, 360] degrees", FailureKind::Usage);
+                         d.sun.elevation = float(s[0]);
+                         d.sun.azimuth = float(s[1]);
+                     }));
+    range(bind(cmd, "--sun-radius", v.sun.angularRadius, "Angular radius of the sun, degrees",
+               [](SceneDescription& d, float r) { d.sun.angularRadius = r; }),
+          0.01, 20.0);
+
+    // geometry
+    text_.geometry = "procedural";
+    withDefault(bind(cmd, "--geometry", text_.geometry,
+                     "procedural|triangles|plain for every kind, or KIND=MODE,... (kinds: walls, roofs, buildings); "
+                     "plain: no facades",
+                     [](SceneDescription& d, const std::string& text) { d.geometry.modes = parseGeometryModes(text); }));
+    withDefault(bind(cmd, "--wall-tiles", v.geometry.wallTiles,
+                     "whole, or SLOTSxFLOORS: split each procedural wall into BVH tiles of at most that many cells",
+                     [](SceneDescription& d, const std::string& text) {
+                         if (!wallTileSizeOf(text))
+                             throw InputError("--wall-tiles: need 'whole' or SLOTSxFLOORS (e.g. 4x4), got '" + text + "'",
+                                              FailureKind::Usage);
+                         d.geometry.wallTiles = text;
+                     }));
+
+    // integrator
+    range(bind(cmd, "--spp", v.integrator.spp, "Samples per pixel",
+               [](SceneDescription& d, uint32_t spp) { d.integrator.spp = spp; }),
+          1u, kMaxSpp);
+    range(bind(cmd, "--max-depth", v.integrator.maxDepth, "Path vertices after the camera",
+               [](SceneDescription& d, uint32_t n) { d.integrator.maxDepth = n; }),
+          1u, 1000u);
+    range(bind(cmd, "--rr-depth", v.integrator.rrDepth, "Depth where Russian roulette starts",
+               [](SceneDescription& d, uint32_t n) { d.integrator.rrDepth = n; }),
+          1u, 1000u);
+    range(bind(cmd, "--rr-survival", v.integrator.rrSurvival, "Largest survival probability of Russian roulette",
+               [](SceneDescription& d, float p) { d.integrator.rrSurvival = p; }),
+          0.01, 1.0);
+    if (CLI::Option* sampler = bind(cmd, "--light-sampler", v.integrator.lightSampler, "How lights are picked: uniform or power",
+                                    [](SceneDescription& d, const std::string& s) { d.integrator.lightSampler = s; }))
+        sampler->check(CLI::IsMember({"uniform", "power"}))->capture_default_str();
+
+    // film
+    withDefault(bind(cmd, "--out", v.film.output, "Image to write; the format follows the extension: .png (tone-mapped sRGB) or .exr (linear, with AOV layers)",
+                     [](SceneDescription& d, const std::string& out) { d.film.output = out; }));
+    range(bind(cmd, "--width", v.film.width, "Image width in pixels",
+               [](SceneDescription& d, uint32_t w) { d.film.width = w; }),
+          1u, kMaxImageSide);
+    range(bind(cmd, "--height", v.film.height, "Image height in pixels",
+               [](SceneDescription& d, uint32_t h) { d.film.height = h; }),
+          1u, kMaxImageSide);
+    range(bind(cmd, "--exposure", v.film.exposure, "Exposure in stops",
+               [](SceneDescription& d, float ev) { d.film.exposure = ev; }),
+          -20.0, 20.0);
+    if (only_.empty() || std::find(only_.begin(), only_.end(), "--exr-float") != only_.end()) {
+        CLI::Option* flag = cmd.add_flag("--exr-float", v.film.exrFloat, "EXR colour, albedo and normal as 32-bit float (default half)");
+        overrides_.emplace_back(flag, [&v](SceneDescription& d) { d.film.exrFloat = v.film.exrFloat; });
+    }
+}
+
+SceneDescription SceneCommandLine::resolve() const {
+    SceneDescription d = sceneFile_.empty() ? defaults_ : readSceneFile(sceneFile_);
+    for (const auto& [option, apply] : overrides_)
+        if (option->count()) apply(d);
+    // The file alone was checked as it was read: what fails here, the command line's options made.
+    if (std::optional<SceneProblem> problem = firstSceneProblem(d))
+        throw InputError(problem->option + " (" + problem->key + "): " + problem->message, FailureKind::Usage);
+    return d;
+}
+
+} // namespace urbis

@@ -1,0 +1,129 @@
+// The scene description: every parameter of a render, as plain structs with their defaults. The
+// command line and scene files (description/scene_json.h) both produce one; each phase of a render
+// reads only its part (import: source; camera framing: camera; render: integrator and film).
+// docs/scene_files.md lists every key of its JSON form.
+#pragma once
+
+#include "citygen/city_mesher.h"
+#include "citygen/geometry_modes.h"
+#include "film/film_layers.h"
+#include "scene/sky.h"
+#include "math/vec.h"
+
+#include <array>
+#include <cstdint>
+#include <iterator>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace urbis {
+
+/// The largest film width and height; the memory check (--max-memory) bounds their product.
+inline constexpr uint32_t kMaxImageSide = 65536;
+/// The most samples per pixel one render takes.
+inline constexpr uint32_t kMaxSpp = 1u << 20;
+/// The largest generated city (the layout's own limit is higher; this one keeps a render sane).
+inline constexpr uint64_t kMaxDescribedBuildings = 5'000'000;
+
+/// Where the city comes from: an OSM file, or the generated city.
+struct SourceDescription {
+    std::string osm;                               ///< OSM file (.osm, .osm.pbf, ...); empty: the generated city
+    std::optional<std::array<double, 4>> bbox;     ///< OSM crop, degrees: min lon, min lat, max lon, max lat; none: the file's header box
+    /// Metres {min, max}: OSM buildings without height tags get a seeded height in it (none: estimated
+    /// from neighbours and a table of types); the generated city's heights (none: the layout's default).
+    std::optional<std::array<float, 2>> heightRange;
+    float metresPerLevel = 3.0f;                   ///< storey height for building:levels
+    float heightScale = 1.0f;                      ///< multiplies every building's heights
+    uint64_t buildings = 400;                      ///< size of the generated city
+    uint32_t seed = 1;                             ///< of the generated layout and of every building's seed
+};
+
+/// A camera placed by geography: at a longitude, latitude and altitude, looking along a heading.
+struct GeoCameraDescription {
+    double lon = 0, lat = 0;   ///< degrees, WGS84
+    float altitude = 100;      ///< metres above the ground plane
+    float heading = 0;         ///< degrees clockwise from north
+    float pitch = -20;         ///< degrees above the horizon (negative looks down)
+};
+
+/// The camera: a position and target in world metres, or a geographic placement (OSM only), or
+/// neither: the automatic framing of the whole city.
+struct CameraDescription {
+    std::optional<Vec3f> position, target;     ///< world metres (x east, y up, z south); both or neither
+    std::optional<GeoCameraDescription> geo;   ///< excludes position and target
+    float fov = 50.0f;                         ///< vertical field of view, degrees
+};
+
+struct SunDescription {
+    float elevation = 40.0f;                   ///< degrees above the horizon
+    float azimuth = 150.0f;                    ///< degrees clockwise from north
+    float angularRadius = 0.27f;               ///< degrees
+    /// On a surface facing the sun, in the renderer's relative units: about six times the sky's.
+    Vec3f irradiance{3.3f, 3.1f, 2.8f};
+};
+
+/// Today's analytic sky (lights/sky.h): a zenith-to-horizon gradient above a constant ground.
+struct SkyDescription {
+    Vec3f zenith = Sky{}.zenith;
+    Vec3f horizon = Sky{}.horizon;
+    Vec3f ground = Sky{}.ground;
+    float exponent = Sky{}.exponent;
+};
+
+/// Materials and style overrides: the city's fixed materials, and wall and roof colours by building
+/// type for the buildings whose tags name no colour (the palettes' colours otherwise).
+struct MaterialsDescription {
+    CityMaterials city;
+    std::map<std::string, Vec3f> wallColourByType;   ///< buildingTypeName -> linear colour
+    std::map<std::string, Vec3f> roofColourByType;
+};
+
+/// How each kind of geometry is represented, and the BVH tiling of procedural walls.
+struct GeometryDescription {
+    GeometryModes modes;
+    std::string wallTiles = "whole";   ///< "whole" or "SLOTSxFLOORS" (wallTileSizeOf)
+};
+
+/// The integrator and its parameters. `lightSampler` picks among the lights ("uniform" or
+/// "power"); the path tracer is the one kind today.
+struct IntegratorDescription {
+    std::string kind = "path";
+    uint32_t spp = 16;
+    uint32_t seed = 1;           ///< of the sampler
+    uint32_t maxDepth = 8;       ///< path vertices after the camera
+    uint32_t rrDepth = 3;        ///< Russian roulette starts at this depth
+    float rrSurvival = 0.95f;    ///< largest survival probability of Russian roulette
+    std::string lightSampler = "power";
+    uint32_t lightSamples = 1;   ///< light samples per path vertex (0: BSDF sampling alone)
+};
+
+/// The AOV layers a film may keep beside its colour (the layer groups of an .exr output).
+inline constexpr auto& kFilmLayers = kFilmLayerNames;
+
+struct FilmDescription {
+    uint32_t width = 1280, height = 720;
+    float exposure = -0.6f;            ///< stops
+    std::string output = "urbis.png"; ///< the image; its extension picks the format
+    /// Layers of kFilmLayers an .exr output holds besides RGBA (a .png holds none).
+    std::vector<std::string> layers{std::begin(kFilmLayers), std::end(kFilmLayers)};
+    bool exrFloat = false;             ///< an .exr's colour, albedo and normal as float rather than half
+};
+
+struct SceneDescription {
+    SourceDescription source;
+    CameraDescription camera;
+    SunDescription sun;
+    SkyDescription sky;
+    MaterialsDescription materials;
+    GeometryDescription geometry;
+    IntegratorDescription integrator;
+    FilmDescription film;
+};
+
+/// The choices of IntegratorDescription::kind and ::lightSampler.
+inline constexpr const char* kIntegratorKinds[] = {"path"};
+inline constexpr const char* kLightSamplers[] = {"uniform", "power"};
+
+} // namespace urbis

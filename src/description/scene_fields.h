@@ -1,0 +1,99 @@
+// The one list of a scene file's keys: each field of SceneDescription with its JSON name and its
+// allowed range. The reader and the writer (scene_json.cpp) both walk it, so a saved file has every
+// key and a key the list lacks is unknown to the reader.
+#pragma once
+
+#include "description/scene_description.h"
+
+#include <span>
+#include <utility>
+
+namespace urbis {
+
+/// Names of the geometry representations, for the scene file.
+inline constexpr std::pair<const char*, Representation> kRepresentationNames[] = {
+    {"procedural", Representation::Procedural}, {"triangles", Representation::Triangles}, {"plain", Representation::Plain}};
+
+/// Calls the visitor `v` on every field of `d` (a SceneDescription, const or not), in file order:
+///   v.object(key, fn)                           a nested object; fn() visits its fields
+///   v.optionalObject(key, optional, fn)         an object or null; fn(value) visits its fields
+///   v.number(key, value, lo, hi)                an integer or a float in [lo, hi]
+///   v.vec3(key, vec, lo, hi) / v.optionalVec3   three numbers, each in [lo, hi] (or null)
+///   v.optionalArray(key, optional, lo, hi)      N numbers in [lo, hi], or null
+///   v.text(key, string)                         any string
+///   v.boolean(key, flag)                        true or false
+///   v.choice(key, string, names)                one of `names`
+///   v.choiceList(key, strings, names)           an array of distinct `names`
+///   v.enumeration(key, value, pairs)            one of the names of `pairs`
+///   v.colourMap(key, map)                       an object of building type -> colour
+template <typename Description, typename Visitor>
+void visitSceneFields(Description& d, Visitor& v) {
+    v.object("source", [&] {
+        v.text("osm", d.source.osm);
+        v.optionalArray("bbox", d.source.bbox, -180.0, 180.0);
+        v.optionalArray("height_range", d.source.heightRange, 0.0f, 1000.0f);
+        v.number("metres_per_level", d.source.metresPerLevel, 1.0f, 20.0f);
+        v.number("height_scale", d.source.heightScale, 0.05f, 50.0f);
+        v.number("buildings", d.source.buildings, uint64_t(1), kMaxDescribedBuildings);
+        v.number("seed", d.source.seed, 0u, UINT32_MAX);
+    });
+    v.object("camera", [&] {
+        v.optionalVec3("position", d.camera.position, -1e7f, 1e7f);
+        v.optionalVec3("target", d.camera.target, -1e7f, 1e7f);
+        v.optionalObject("geo", d.camera.geo, [&](auto& geo) {
+            v.number("lon", geo.lon, -180.0, 180.0);
+            v.number("lat", geo.lat, -90.0, 90.0);
+            v.number("altitude", geo.altitude, -1e5f, 1e7f);
+            v.number("heading", geo.heading, -360.0f, 360.0f);
+            v.number("pitch", geo.pitch, -90.0f, 90.0f);
+        });
+        v.number("fov", d.camera.fov, 1.0f, 170.0f);
+    });
+    v.object("sun", [&] {
+        v.number("elevation", d.sun.elevation, -90.0f, 90.0f);
+        v.number("azimuth", d.sun.azimuth, -360.0f, 360.0f);
+        v.number("angular_radius", d.sun.angularRadius, 0.01f, 20.0f);
+        v.vec3("irradiance", d.sun.irradiance, 0.0f, 1e6f);
+    });
+    v.object("sky", [&] {
+        v.vec3("zenith", d.sky.zenith, 0.0f, 1e6f);
+        v.vec3("horizon", d.sky.horizon, 0.0f, 1e6f);
+        v.vec3("ground", d.sky.ground, 0.0f, 1e6f);
+        v.number("exponent", d.sky.exponent, 0.01f, 100.0f);
+    });
+    v.object("materials", [&] {
+        v.object("ground", [&] { v.vec3("albedo", d.materials.city.groundAlbedo, 0.0f, 1.0f); });
+        v.object("window_glass", [&] {
+            v.vec3("transmittance", d.materials.city.glassTransmittance, 0.0f, 1.0f);
+            v.number("ior", d.materials.city.glassIor, 1.0f, 3.0f);
+        });
+        v.object("lit_room", [&] { v.vec3("emission", d.materials.city.litRoomEmission, 0.0f, 1e6f); });
+        v.colourMap("wall_colour_by_type", d.materials.wallColourByType);
+        v.colourMap("roof_colour_by_type", d.materials.roofColourByType);
+    });
+    v.object("geometry", [&] {
+        v.enumeration("walls", d.geometry.modes.walls, kRepresentationNames);
+        v.enumeration("roofs", d.geometry.modes.roofs, kRepresentationNames);
+        v.text("wall_tiles", d.geometry.wallTiles);
+    });
+    v.object("integrator", [&] {
+        v.choice("kind", d.integrator.kind, std::span(kIntegratorKinds));
+        v.number("spp", d.integrator.spp, 1u, kMaxSpp);
+        v.number("seed", d.integrator.seed, 0u, UINT32_MAX);
+        v.number("max_depth", d.integrator.maxDepth, 1u, 1000u);
+        v.number("rr_depth", d.integrator.rrDepth, 1u, 1000u);
+        v.number("rr_survival", d.integrator.rrSurvival, 0.01f, 1.0f);
+        v.choice("light_sampler", d.integrator.lightSampler, std::span(kLightSamplers));
+        v.number("light_samples", d.integrator.lightSamples, 0u, 64u);
+    });
+    v.object("film", [&] {
+        v.number("width", d.film.width, 1u, kMaxImageSide);
+        v.number("height", d.film.height, 1u, kMaxImageSide);
+        v.number("exposure", d.film.exposure, -20.0f, 20.0f);
+        v.text("output", d.film.output);
+        v.choiceList("layers", d.film.layers, std::span(kFilmLayers));
+        v.boolean("exr_float", d.film.exrFloat);
+    });
+}
+
+} // namespace urbis

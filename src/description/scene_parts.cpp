@@ -1,0 +1,80 @@
+#include "description/scene_parts.h"
+
+#include "description/building_type_names.h"
+#include "base/input_error.h"
+#include "osm/geo_projection.h"
+#include "scene/camera_framing.h"
+
+namespace urbis {
+
+LayoutParams layoutParamsOf(const SourceDescription& source) {
+    LayoutParams params;
+    params.buildings = source.buildings;
+    params.seed = source.seed;
+    if (source.heightRange) {
+        params.minBuildingHeight = (*source.heightRange)[0];
+        params.maxBuildingHeight = (*source.heightRange)[1];
+    }
+    return params;
+}
+
+ImportOptions importOptionsOf(const SourceDescription& source) {
+    ImportOptions params;
+    params.bbox = source.bbox;
+    params.untaggedHeightRange = source.heightRange;
+    params.metresPerLevel = source.metresPerLevel;
+    params.seed = source.seed;
+    return params;
+}
+
+void applyColourOverrides(const MaterialsDescription& materials, CityModel& city) {
+    if (materials.wallColourByType.empty() && materials.roofColourByType.empty()) return;
+    const auto colourOf = [](const std::map<std::string, Vec3f>& byType, BuildingType type, Rgb& colour) {
+        auto it = byType.find(buildingTypeName(type));
+        if (it != byType.end()) colour = Rgb{it->second.x, it->second.y, it->second.z};
+    };
+    for (Building& b : city.buildings) {
+        if (!b.wallColourTagged) colourOf(materials.wallColourByType, b.type, b.wallColour);
+        if (!b.roofColourTagged) colourOf(materials.roofColourByType, b.type, b.roofColour);
+    }
+}
+
+Sun sunOf(const SunDescription& sun) { return makeSun(sun.elevation, sun.azimuth, sun.angularRadius, sun.irradiance); }
+
+Sky skyOf(const SkyDescription& sky) { return Sky{sky.zenith, sky.horizon, sky.ground, sky.exponent}; }
+
+RenderSettings renderSettingsOf(const IntegratorDescription& integrator, const FilmDescription& film) {
+    RenderSettings settings;
+    settings.width = film.width;
+    settings.height = film.height;
+    settings.spp = integrator.spp;
+    settings.seed = integrator.seed;
+    settings.maxDepth = integrator.maxDepth;
+    settings.rrDepth = integrator.rrDepth;
+    settings.rrSurvival = integrator.rrSurvival;
+    settings.lightSampler = integrator.lightSampler == "uniform" ? LightSamplerKind::Uniform : LightSamplerKind::Power;
+    settings.lightSamples = integrator.lightSamples;
+    return settings;
+}
+
+uint32_t filmLayerMaskOf(const std::vector<std::string>& layers) {
+    uint32_t mask = 0;
+    for (const std::string& name : layers)
+        for (uint32_t i = 0; i < kFilmLayerCount; ++i)
+            if (name == kFilmLayerNames[i]) mask |= 1u << i;
+    return mask;
+}
+
+Camera cameraOf(const CameraDescription& camera, float aspect, const GeoOrigin& origin,
+                std::span<const Bounds3f> framingPieces) {
+    if (camera.position && camera.target) return makeLookAtCamera(*camera.position, *camera.target, camera.fov, aspect);
+    if (camera.geo) {
+        if (!origin.valid) throw InputError("--camera-geo (camera.geo): needs a city imported from OSM", FailureKind::Usage);
+        const GeoCameraDescription& g = *camera.geo;
+        Vec2d local = GeoProjection(LonLat{origin.lon, origin.lat}).project(LonLat{g.lon, g.lat});
+        return cameraFromHeading(Vec3f{float(local.x), g.altitude, float(-local.y)}, g.heading, g.pitch, camera.fov, aspect);
+    }
+    return frameCity(framingPieces, camera.fov, aspect);
+}
+
+} // namespace urbis

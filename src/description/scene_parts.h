@@ -1,0 +1,44 @@
+// What each phase of a render takes from the scene description: the importer and the layout their
+// parameters, the city its style overrides, the scene its lights, the renderer its settings.
+#pragma once
+
+#include "description/scene_description.h"
+#include "layout/city_layout.h"
+#include "scene/sky.h"
+#include "scene/sun.h"
+#include "math/bounds.h"
+#include "model/city_model.h"
+#include "osm/import_options.h"
+#include "scene/camera.h"
+#include "scene/render_settings.h"
+
+#include <span>
+
+namespace urbis {
+
+/// The generated city's parameters: size, seed, and the height range where one is given.
+LayoutParams layoutParamsOf(const SourceDescription& source);
+
+/// The OSM importer's parameters: crop, seed, metres per level, untagged height range.
+ImportOptions importOptionsOf(const SourceDescription& source);
+
+/// Sets the wall and roof colours of `city`'s buildings whose tags name none (Building::
+/// wallColourTagged, roofColourTagged) from the overrides by building type, where one is given.
+void applyColourOverrides(const MaterialsDescription& materials, CityModel& city);
+
+Sun sunOf(const SunDescription& sun);
+Sky skyOf(const SkyDescription& sky);
+
+/// The per-frame settings of the integrator on a film of that size.
+RenderSettings renderSettingsOf(const IntegratorDescription& integrator, const FilmDescription& film);
+
+/// The layer mask (film/film_layers.h) of film.layers' names.
+uint32_t filmLayerMaskOf(const std::vector<std::string>& layers);
+
+/// The camera `camera` describes for an image of `aspect` (width / height): looking from position
+/// at target; placed by geography around `origin` (the imported city's; InputError if invalid); or
+/// else framing the city's `framingPieces` (frameCity).
+Camera cameraOf(const CameraDescription& camera, float aspect, const GeoOrigin& origin,
+                std::span<const Bounds3f> framingPieces);
+
+} // namespace urbis
