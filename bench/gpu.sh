@@ -9,7 +9,7 @@
 # (not by default: Nsight Compute on one render kernel launch of each representation, generated city
 # at 40 m, or at URBIS_PROFILE_HEIGHT metres, joined with the kernel's line table by bench/sass_lines.py;
 # build with -lineinfo for it).
-# Environment: URBIS_BUILD_DIR (build), URBIS_CUDA_FMAD (OFF), URBIS_CUDA_FLAGS (extra nvcc flags, e.g.
+# Environment: URBIS_BUILD_DIR (build), URBIS_CUDA_FLAGS (extra nvcc flags, e.g.
 # -lineinfo for Nsight Compute's source view), URBIS_TAG (suffix of the JSON names), JOBS.
 # Building there takes minutes of device time; binaries built here run there as they are. So
 # build here (cmake --build build --target urbis urbis_gpu_tests), copy build/urbis and
@@ -35,7 +35,6 @@ export LD_LIBRARY_PATH=$ROOT/usr/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}
 export URBIS_OSMNX_DATA=$DEPS/data URBIS_SHARED_DATA=$DEPS/data
 SF=$DEPS/data/sf_downtown_2023.osm.pbf
 BUILD=${URBIS_BUILD_DIR:-build}
-FMAD=${URBIS_CUDA_FMAD:-OFF}
 TAG=${URBIS_TAG:-}
 # A dpkg -x'd dependency folder may hold only libexpatw (UTF-16, which libosmium cannot read) beside a
 # dangling libexpat.so: then take the system's libexpat.
@@ -53,7 +52,7 @@ if [[ $STEPS == *,build,* ]]; then
   say build
   run nvidia-smi --query-gpu=name,memory.total,clocks.sm,clocks.max.sm --format=csv
   run cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$ROOT/usr" -DURBIS_BUILD_BENCH=OFF \
-      -DURBIS_CUDA_RESOURCE_USAGE=ON -DURBIS_CUDA_FMAD="$FMAD" -DCMAKE_CUDA_FLAGS="${URBIS_CUDA_FLAGS:-}" \
+      -DURBIS_CUDA_RESOURCE_USAGE=ON -DCMAKE_CUDA_FLAGS="${URBIS_CUDA_FLAGS:-}" \
       "${EXPAT_ARGS[@]}" || exit 1
   run cmake --build "$BUILD" -j"$JOBS" || exit 1
   grep -E "ptxas info|stack frame" "$LOG" | tail -8
@@ -109,9 +108,9 @@ if [[ $STEPS == *,profile,* ]]; then
     ncu --import "$OUT/profile_$geometry.ncu-rep" --page source --csv --print-source sass |
         gzip > "$OUT/profile_$geometry.csv.gz"
     say "profile ($geometry)"
-    # The render kernel of the scene's layout (its mangled name: SceneLayout 1 Mixed, 2 Triangles).
-    layout=$([[ $geometry == procedural ]] && echo 1 || echo 2)
-    run python3 bench/sass_lines.py "renderKernelILNS_11SceneLayoutE$layout" "$SASS" "$OUT/profile_$geometry.csv.gz" 30 || status=1
+    # The render kernel's copy for the scene (its mangled name: renderKernel<true> with costly leaves).
+    costly=$([[ $geometry == procedural ]] && echo 1 || echo 0)
+    run python3 bench/sass_lines.py "renderKernelILb${costly}E" "$SASS" "$OUT/profile_$geometry.csv.gz" 30 || status=1
   done
 fi
 

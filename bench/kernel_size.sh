@@ -7,13 +7,13 @@ cd "$(dirname "$0")/.."
 NVCC=${NVCC:-$(command -v nvcc || echo /usr/local/cuda/bin/nvcc)}
 CUBIN=$(mktemp --suffix=.cubin)
 trap 'rm -f "$CUBIN"' EXIT
-"$NVCC" -std=c++20 -arch=sm_90 -cubin -O3 -fmad=false -ftz=true -DURBIS_HAVE_CUDA=1 -I src "$@" src/gpu/gpu_backend.cu -o "$CUBIN"
+"$NVCC" -std=c++20 -arch=sm_90 -cubin -O3 --use_fast_math -DURBIS_HAVE_CUDA=1 -I src "$@" src/gpu/gpu_backend.cu -o "$CUBIN"
 readelf -SW "$CUBIN" 2>/dev/null | python3 -c '
 import re, sys
 for line in sys.stdin:
     m = re.search(r"\.text\.(\S+)\s+\S+\s+\S+\s+\S+\s+([0-9a-f]+)", line)
     if m and int(m.group(2), 16):
-        name = next((k for k in ("renderKernel", "closestKernel", "occludedKernel") if k in m.group(1)), m.group(1))
-        layout = re.search(r"SceneLayoutE(\d)", m.group(1))
-        if layout: name += {"1": "<Mixed>", "2": "<Triangles>"}[layout.group(1)]
+        name = next((k for k in ("renderKernel", "aovKernel", "closestKernel", "occludedKernel") if k in m.group(1)), m.group(1))
+        costly = re.search(r"ILb([01])E", m.group(1))
+        if costly: name += {"1": "<costly leaves>", "0": "<no costly leaves>"}[costly.group(1)]
         print(f"{name:24s} {int(m.group(2), 16) // 16:6d} instructions")'

@@ -53,7 +53,7 @@ TEST(GpuCli, CpuAndCudaTraceNearlyTheSamePaths) {
     auto cpu = nlohmann::json::parse(readFile(dir / "cpu.json"));
     auto gpu = nlohmann::json::parse(readFile(dir / "gpu.json"));
     // Traversal is bit-equal (-fmad=false), shading on the GPU uses the hardware's approximations
-    // (math/kernel_math.h): paths take the same turns but for a few, so nearly the same ray count.
+    // (the precision policy, docs/architecture.md): paths take the same turns but for a few, so nearly the same ray count.
     EXPECT_NEAR(cpu["rays"].get<double>(), gpu["rays"].get<double>(), 1e-3 * cpu["rays"].get<double>());
     EXPECT_GT(readFile(dir / "gpu.png").size(), 100u);
 }

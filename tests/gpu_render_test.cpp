@@ -14,7 +14,7 @@ using namespace urbis;
 // Metric: per-pixel luminance of the linear images (mean of spp samples). Both backends run the
 // same tracePath on the same sample streams, so pixels differ only where rounding sends one
 // sample's path elsewhere: the GPU's shading math is the hardware's approximations
-// (math/kernel_math.h), its hits exact. Tolerances: the mean
+// (the precision policy, docs/architecture.md), its hits exact. Tolerances: the mean
 // absolute difference under 0.1% of the mean luminance, at most 1% of pixels off by more than
 // 0.1% relative, and no pixel off by more than the largest single-sample change spread over spp
 // (bounded here by 2 x mean luminance x 64 / spp).

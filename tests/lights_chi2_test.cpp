@@ -193,7 +193,7 @@ TEST(LightsPdf, IntegratesToOne) {
     const TriangleLight* triangles = view.lights.triangles + view.lights.surfaces[bright.index].firstTriangle;
     const Vec3f from{1.0f, -1.0f, 0.5f};
     chi2::DirectionBins towards;
-    towards.frame = Frame::fromZ(normalize(lightBounds(scene.lights, bright).centre() - from));
+    towards.frame = Frame::fromZ(normalize(lightBounds(scene, bright).centre() - from));
     towards.cosMin = 0.5;
     towards.thetaBins = towards.phiBins = 64;
     towards.smooth = false;

@@ -1,5 +1,6 @@
 // The path tracer against analytic radiance: a Lambertian plane under a uniform sky and a sun.
 #include "cpu/cpu_renderer.h"
+#include "math/constants.h"
 #include "scene/camera_framing.h"
 #include "scene/scene.h"
 

@@ -2,6 +2,7 @@
 
 #include "app/camera_checks.h"
 #include "app/host_memory.h"
+#include "app/memory_json.h"
 #include "app/memory_limit.h"
 #include "app/output_paths.h"
 #include "app/render_device.h"

@@ -4,7 +4,6 @@
 #pragma once
 
 #include "geometry/prim_dispatch.h"
-#include "math/kernel_math.h"
 
 namespace urbis {
 

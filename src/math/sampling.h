@@ -3,7 +3,8 @@
 // (tests/sampling_chi2_test.cpp).
 #pragma once
 
-#include "math/kernel_math.h"
+#include "math/constants.h"
+#include "math/vec.h"
 
 namespace urbis {
 

@@ -1,6 +1,6 @@
 #include "scene/sun.h"
 
-#include "math/kernel_math.h"
+#include "math/constants.h"
 
 namespace urbis {
 

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Two builds of urbis measured side by side in one run of the GPU machine: GPU frames and ray rates
+# (SF with facades, their triangle twin and plain walls; the 100k generated city procedural and plain),
+# CPU ray rates of SF, and converged renders of the default world and of SF by each, compared by
+# bench/compare_builds.py. Usage: bench/compare_builds.sh BEFORE_DIR AFTER_DIR (each holds a `urbis`);
+# dependencies and data from $URBIS_DEPS (default ./.deps, as bench/gpu_deps.sh gathers them); results
+# in $OUT (default ./compare-out): bench_<build>_<scene>_<geometry>_<device>.json, converged_<build>_<world>.png
+# and compare.md.
+set -uo pipefail
+BEFORE=${1:?before build folder} AFTER=${2:?after build folder}
+OUT=${OUT:-$PWD/compare-out}
+DEPS=${URBIS_DEPS:-$PWD/.deps}
+mkdir -p "$OUT"
+ROOT=$DEPS/root
+if [[ ! -d $ROOT/usr && -d $DEPS/debs ]]; then
+  ROOT=${TMPDIR:-/tmp}/urbis-deps-root
+  if [[ ! -d $ROOT/usr ]]; then
+    for f in "$DEPS"/debs/*.deb; do dpkg -x "$f" "$ROOT" || exit 1; done
+  fi
+fi
+export LD_LIBRARY_PATH=$ROOT/usr/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}
+SF=$DEPS/data/sf_downtown_2023.osm.pbf
+status=0
+# Interleaved by scene, so that a drift of the machine's clocks touches both builds alike.
+for scene in sf 100k; do
+  for geometry in procedural triangles plain; do
+    [[ $scene == 100k && $geometry == triangles ]] && continue
+    for build in before after; do
+      dir=$([[ $build == before ]] && echo "$BEFORE" || echo "$AFTER")
+      src=(--osm "$SF"); [[ $scene == 100k ]] && src=(--buildings 100000)
+      "$dir"/urbis bench --device cuda --geometry $geometry "${src[@]}" \
+          --json "$OUT/bench_${build}_${scene}_${geometry}_cuda.json" > "$OUT/bench_${build}_${scene}_${geometry}_cuda.log" 2>&1 || status=1
+    done
+  done
+done
+for build in before after; do
+  dir=$([[ $build == before ]] && echo "$BEFORE" || echo "$AFTER")
+  "$dir"/urbis bench --device cpu --osm "$SF" --repeats 3 --json "$OUT/bench_${build}_sf_procedural_cpu.json" \
+      > "$OUT/bench_${build}_sf_procedural_cpu.log" 2>&1 || status=1
+  "$dir"/urbis render --device cuda --width 640 --height 360 --spp 4096 --out "$OUT/converged_${build}_default.png" >/dev/null 2>&1 || status=1
+  "$dir"/urbis render --device cuda --osm "$SF" --width 640 --height 360 --spp 4096 --out "$OUT/converged_${build}_sf.png" >/dev/null 2>&1 || status=1
+done
+python3 "$(dirname "$0")/compare_builds.py" "$OUT" | tee "$OUT/compare.md" || status=1
+exit $status

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# The README's pictures, each made by the command the README shows beside it, into $OUT (default
+# docs/images). Usage: bench/readme_images.sh [URBIS_BINARY] [DATA_DIR]; defaults ./build/urbis and
+# ../shared/data (the real extracts). On a GPU machine `--device auto` renders them there.
+set -euo pipefail
+URBIS=${1:-./build/urbis}
+DATA=${2:-../shared/data}
+OUT=${OUT:-docs/images}
+mkdir -p "$OUT"
+"$URBIS" render --width 960 --height 540 --spp 64 --out "$OUT/default.png"
+"$URBIS" render --camera 150,6,3,20,35,-10 --fov 55 --width 960 --height 540 --spp 64 --out "$OUT/facades.png"
+"$URBIS" render --camera 97,2.5,3,118,9,-7 --fov 70 --width 960 --height 540 --spp 128 --out "$OUT/shop_windows.png"
+"$URBIS" render --osm docs/examples/roof_shapes.osm --camera 0,62,72,0,0,2 --fov 72 --width 960 --height 400 --spp 64 \
+    --out "$OUT/roof_shapes.png"
+"$URBIS" render --osm "$DATA/sf_downtown_2023.osm.pbf" --width 960 --height 540 --spp 32 --out "$OUT/sf_downtown.png"
+"$URBIS" render --osm "$DATA/london_city_2020.osm.pbf" --camera-geo -0.1035,51.5095,160,45,-18 --fov 50 --width 960 \
+    --height 540 --spp 32 --out "$OUT/london_city.png"
