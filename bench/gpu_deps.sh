@@ -14,7 +14,8 @@ mkdir -p "$DEPS/debs" "$DEPS/data"
     libosmium2-dev libprotozero-dev libexpat1-dev libexpat1 libbz2-dev zlib1g-dev \
     libgeos-dev libgeos3.11.1 libgeos-c1v5 libcgal-dev libboost1.74-dev \
     libgmp-dev libgmp10 libgmpxx4ldbl libmpfr-dev libmpfr6 \
-    libtbb-dev libtbb12 libtbbmalloc2 libtbbbind-2-5)
+    libtbb-dev libtbb12 libtbbmalloc2 libtbbbind-2-5 \
+    libopenexr-dev libopenexr-3-1-30 libimath-dev libimath-3-1-29)
 cp "$VILLAGE/planet_10.068,48.135_10.071,48.137.osm" "$VILLAGE/West-Oakland.osm.bz2" "$DEPS/data/"
 cp "$DATA/sf_downtown_2023.osm.pbf" "$DEPS/data/"
 du -sh "$DEPS"

@@ -79,8 +79,8 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "materials.lit_room.emission", "materials.wall_colour_by_type", "materials.roof_colour_by_type",
         "geometry", "geometry.walls", "geometry.roofs", "geometry.wall_tiles",
         "integrator", "integrator.kind", "integrator.spp", "integrator.seed", "integrator.max_depth",
-        "integrator.rr_depth", "integrator.rr_survival", "integrator.light_sampler",
-        "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers"};
+        "integrator.rr_depth", "integrator.rr_survival", "integrator.light_sampler", "integrator.light_samples",
+        "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers", "film.exr_float"};
     EXPECT_EQ(keys, expected);
     // The geographic camera's own keys, once it is set.
     SceneDescription geo;
