@@ -11,14 +11,7 @@ BEFORE=${1:?before build folder} AFTER=${2:?after build folder}
 OUT=${OUT:-$PWD/compare-out}
 DEPS=${URBIS_DEPS:-$PWD/.deps}
 mkdir -p "$OUT"
-ROOT=$DEPS/root
-if [[ ! -d $ROOT/usr && -d $DEPS/debs ]]; then
-  ROOT=${TMPDIR:-/tmp}/urbis-deps-root
-  if [[ ! -d $ROOT/usr ]]; then
-    for f in "$DEPS"/debs/*.deb; do dpkg -x "$f" "$ROOT" || exit 1; done
-  fi
-fi
-export LD_LIBRARY_PATH=$ROOT/usr/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}
+source "$(dirname "$0")/deps_root.sh"
 SF=$DEPS/data/sf_downtown_2023.osm.pbf
 status=0
 # Interleaved by scene, so that a drift of the machine's clocks touches both builds alike.

@@ -22,16 +22,7 @@ DEPS=${URBIS_DEPS:-$PWD/.deps}
 JOBS=${JOBS:-$(nproc)}
 mkdir -p "$OUT"
 LOG=$OUT/gpu.log
-# Headers and libraries: $DEPS/root where unpacked already, else the .debs unpacked outside the
-# working tree (unpacked, they are too large to carry).
-ROOT=$DEPS/root
-if [[ ! -d $ROOT/usr && -d $DEPS/debs ]]; then
-  ROOT=${TMPDIR:-/tmp}/urbis-deps-root
-  if [[ ! -d $ROOT/usr ]]; then
-    for f in "$DEPS"/debs/*.deb; do dpkg -x "$f" "$ROOT" || exit 1; done
-  fi
-fi
-export LD_LIBRARY_PATH=$ROOT/usr/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}
+source "$(dirname "$0")/deps_root.sh"
 export URBIS_OSMNX_DATA=$DEPS/data URBIS_SHARED_DATA=$DEPS/data
 SF=$DEPS/data/sf_downtown_2023.osm.pbf
 BUILD=${URBIS_BUILD_DIR:-build}
