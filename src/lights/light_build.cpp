@@ -43,39 +43,34 @@ std::vector<bool> materialsOutsideTriangles(const Scene& scene) {
     return outside;
 }
 
-/// The sky's luminance table over the lat-long map, times sin theta so that sampling it follows
-/// radiance per solid angle, and its integral over the sphere (luminance per solid angle). With
-/// `upperOnly` (an infinite ground plane hides every direction below the horizon from every point
-/// above it) the rows below the horizon stay zero. With `compensate`, the table holds only what
-/// exceeds the sky's mean luminance (MIS compensation, Karlik et al. 2019; pbrt-v4
-/// ImageInfiniteLight): BSDF sampling already finds the even part well, so light samples go where
-/// the sky is brighter than that. Directions of pdf 0 are BSDF sampling's alone, with weight 1:
-/// every estimate stays unbiased.
+/// The sky's luminance table over the equal-area map (lights/sky_light.h: every cell the same solid
+/// angle), and its integral over the sphere (luminance per solid angle). With `upperOnly` (an
+/// infinite ground plane hides every direction below the horizon from every point above it) the
+/// rows below the horizon stay zero. With `compensate`, the table holds only what exceeds the sky's
+/// mean luminance (MIS compensation, Karlik et al. 2019; pbrt-v4 ImageInfiniteLight): BSDF sampling
+/// already finds the even part well, so light samples go where the sky is brighter than that.
+/// Directions of pdf 0 are BSDF sampling's alone, with weight 1: every estimate stays unbiased.
 std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, bool upperOnly, bool compensate,
                                      double& integral) {
     std::vector<float> func(size_t(nu) * nv, 0.0f);
-    const double cell = (2.0 * kPi / nu) * (kPi / nv);
+    const double cell = 4.0 * kPi / (double(nu) * nv);
     const uint32_t rows = upperOnly ? (nv + 1) / 2 : nv;
-    double weighted = 0, solidAngle = 0;
+    double sum = 0;
     for (uint32_t v = 0; v < rows; ++v)
         for (uint32_t u = 0; u < nu; ++u) {
             const Vec2f uv{(float(u) + 0.5f) / float(nu), (float(v) + 0.5f) / float(nv)};
             const float lum = luminance(skyRadiance(sky, skyDirectionFromUv(uv)));
-            const double sinTheta = std::sin(kPi * uv.y);
             func[size_t(v) * nu + u] = lum;
-            weighted += double(lum) * sinTheta;
-            solidAngle += sinTheta;
+            sum += lum;
         }
-    const float mean = compensate && solidAngle > 0 ? float(weighted / solidAngle) : 0.0f;
+    const float mean = compensate ? float(sum / (double(rows) * nu)) : 0.0f;
     integral = 0;
-    for (uint32_t v = 0; v < rows; ++v) {
-        const float sinTheta = std::sin(kPi * (float(v) + 0.5f) / float(nv));
+    for (uint32_t v = 0; v < rows; ++v)
         for (uint32_t u = 0; u < nu; ++u) {
             float& f = func[size_t(v) * nu + u];
-            f = fmaxf(0.0f, f - mean) * sinTheta;
+            f = fmaxf(0.0f, f - mean);
             integral += double(f) * cell;
         }
-    }
     return func;
 }
 

@@ -1,7 +1,10 @@
 // The sky as an environment light (host+device): its radiance, and directions importance-sampled
-// from a piecewise-constant table of that radiance over a lat-long map (pbrt-v3 InfiniteAreaLight;
-// the table is built once per scene by buildLights). Map: u = phi / 2 pi with phi the azimuth from
-// +x towards +z, v = theta / pi with theta from +y (up).
+// from a piecewise-constant table of that radiance over an equal-area map of the sphere (pbrt-v3
+// InfiniteAreaLight's method; the table is built once per scene by buildLights). Map (Lambert's
+// cylindrical equal-area projection): u = phi / 2 pi with phi the azimuth from +x towards +z,
+// v = (1 - cos theta) / 2 with theta from +y (up). Every cell covers the same solid angle, so the
+// map's Jacobian is the constant 4 pi: no sin theta and no acos per ray, which keeps the GPU's
+// render kernel smaller (docs/gpu_notes.md § Instruction cache).
 #pragma once
 
 #include "math/piecewise_constant.h"
@@ -17,41 +20,35 @@ URBIS_HD inline Vec3f skyRadiance(const Sky& sky, Vec3f dir) {
     return sky.zenith * w + sky.horizon * (1.0f - w);
 }
 
-/// The unit direction at (u, v) of the lat-long map.
+/// The unit direction at (u, v) of the map.
 URBIS_HD inline Vec3f skyDirectionFromUv(Vec2f uv) {
-    float theta = kPi * uv.y, phi = 2.0f * kPi * uv.x;
-    float sinTheta = sinf(theta);
-    return {sinTheta * cosf(phi), cosf(theta), sinTheta * sinf(phi)};
+    const float cosTheta = 1.0f - 2.0f * uv.y, phi = 2.0f * kPi * uv.x;
+    const float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
+    return {sinTheta * cosf(phi), cosTheta, sinTheta * sinf(phi)};
 }
 
-/// (u, v) of a unit direction on the lat-long map.
+/// (u, v) of a unit direction on the map.
 URBIS_HD inline Vec2f skyUvFromDirection(Vec3f dir) {
     float phi = atan2f(dir.z, dir.x);
     if (phi < 0.0f) phi += 2.0f * kPi;
-    return {phi / (2.0f * kPi), acosf(fminf(1.0f, fmaxf(-1.0f, dir.y))) / kPi};
+    return {phi / (2.0f * kPi), fminf(1.0f, fmaxf(0.0f, 0.5f * (1.0f - dir.y)))};
 }
 
-/// A direction distributed as the table (uniform over the sphere without one) and its solid-angle
-/// pdf; the map's Jacobian is 2 pi^2 sin(theta).
+/// The map's constant Jacobian: solid angle per unit of (u, v) area.
+inline constexpr float kSkyMapSolidAngle = 4.0f * kPi;
+
+/// A direction distributed as the table and its solid-angle pdf. The sky is a light only with a
+/// table (buildLights), so the table is never empty here.
 URBIS_HD inline Vec3f sampleSkyDirection(const PiecewiseConstant2DView& table, float u1, float u2, float& pdf) {
-    if (table.empty()) {
-        pdf = uniformSpherePdf();
-        return sampleUniformSphere(u1, u2);
-    }
     float uvPdf;
     const Vec2f uv = samplePiecewiseConstant2D(table, u1, u2, uvPdf);
-    const Vec3f dir = skyDirectionFromUv(uv);
-    const float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - dir.y * dir.y));
-    pdf = sinTheta > 0.0f ? uvPdf / (2.0f * kPi * kPi * sinTheta) : 0.0f;
-    return dir;
+    pdf = uvPdf / kSkyMapSolidAngle;
+    return skyDirectionFromUv(uv);
 }
 
 /// The solid-angle pdf with which sampleSkyDirection returns the unit direction `dir`.
 URBIS_HD inline float skyDirectionPdf(const PiecewiseConstant2DView& table, Vec3f dir) {
-    if (table.empty()) return uniformSpherePdf();
-    const Vec2f uv = skyUvFromDirection(dir);
-    const float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - dir.y * dir.y));
-    return sinTheta > 0.0f ? piecewiseConstant2DPdf(table, uv) / (2.0f * kPi * kPi * sinTheta) : 0.0f;
+    return piecewiseConstant2DPdf(table, skyUvFromDirection(dir)) / kSkyMapSolidAngle;
 }
 
 } // namespace urbis

@@ -55,7 +55,7 @@ struct LightsView {
     const TriangleLight* triangles = nullptr;
     const uint32_t* lightOfMaterial = nullptr;    ///< per material: its EmissiveSurface's light, or kNoLight
     uint32_t materialCount = 0;
-    PiecewiseConstant2DView skyTable;             ///< over (u, v) of the sky's lat-long map (lights/sky_light.h)
+    PiecewiseConstant2DView skyTable;             ///< over (u, v) of the sky's equal-area map (lights/sky_light.h)
     uint32_t sunLight = 0, skyLight = kNoLight;   ///< their places in records, or kNoLight
 };
 
