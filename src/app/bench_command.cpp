@@ -87,7 +87,7 @@ RayBatches makeRays(const Scene& scene, const Camera& camera, const RenderSettin
             SurfaceHit hit = intersectScene(view, ray);
             if (!hit.valid()) continue;
             hitBuilding[i] = hit.kind != kPrimKindOf<GroundRecord>;
-            Vec3f origin = offsetRayOrigin(ray.origin + ray.dir * hit.t, hit.normal);
+            Vec3f origin = offsetRayOrigin(hit.position, hit.normal);
             SampleStream rng{settings.seed, uint32_t(i), 0, 16};
             float u1 = rng.draw(), u2 = rng.draw(), u3 = rng.draw(), u4 = rng.draw();
             diffuse[i] = Ray{origin, Frame::fromZ(hit.normal).toWorld(sampleCosineHemisphere(u1, u2))};

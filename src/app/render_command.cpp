@@ -184,7 +184,7 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
         {"rays", counters.rays},
         {"rays_per_second", counters.seconds > 0 ? double(counters.rays) / counters.seconds : 0.0},
         // The scene as a scene file has it (its order dropped: the stats' object sorts its keys).
-        {"scene", nlohmann::json::parse(sceneToJson(o.scene).dump())},
+        {"scene", nlohmann::json(sceneToJson(o.scene))},
     };
     writeTextFileAtomically(o.run.statsFile, stats.dump(2) + "\n");
 }

@@ -20,10 +20,14 @@ Vec3f vec3Of(const std::vector<double>& v, size_t first) {
 
 SceneCommandLine::SceneCommandLine(SceneDescription defaults) : defaults_(std::move(defaults)), values_(defaults_) {}
 
+bool SceneCommandLine::wanted(std::string_view name) const {
+    return only_.empty() || std::find(only_.begin(), only_.end(), name) != only_.end();
+}
+
 template <typename T, typename Apply>
 CLI::Option* SceneCommandLine::bind(CLI::App& cmd, const std::string& name, T& storage, const std::string& help,
                                     Apply apply) {
-    if (!only_.empty() && std::find(only_.begin(), only_.end(), name) == only_.end()) return nullptr;
+    if (!wanted(name)) return nullptr;
     CLI::Option* option = cmd.add_option(name, storage, help);
     overrides_.emplace_back(option, [&storage, apply](SceneDescription& d) { apply(d, storage); });
     return option;
@@ -139,7 +143,8 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
           0.01, 1.0);
     if (CLI::Option* sampler = bind(cmd, "--light-sampler", v.integrator.lightSampler, "How lights are picked: uniform or power",
                                     [](SceneDescription& d, const std::string& s) { d.integrator.lightSampler = s; }))
-        sampler->check(CLI::IsMember({"uniform", "power"}))->capture_default_str();
+        sampler->check(CLI::IsMember(std::vector<std::string>(std::begin(kLightSamplers), std::end(kLightSamplers))))
+            ->capture_default_str();
 
     // film
     withDefault(bind(cmd, "--out", v.film.output, "Image to write; the format follows the extension: .png (tone-mapped sRGB) or .exr (linear, with AOV layers)",
@@ -153,7 +158,7 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
     range(bind(cmd, "--exposure", v.film.exposure, "Exposure in stops",
                [](SceneDescription& d, float ev) { d.film.exposure = ev; }),
           -20.0, 20.0);
-    if (only_.empty() || std::find(only_.begin(), only_.end(), "--exr-float") != only_.end()) {
+    if (wanted("--exr-float")) {
         CLI::Option* flag = cmd.add_flag("--exr-float", v.film.exrFloat, "EXR colour, albedo and normal as 32-bit float (default half)");
         overrides_.emplace_back(flag, [&v](SceneDescription& d) { d.film.exrFloat = v.film.exrFloat; });
     }

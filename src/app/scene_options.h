@@ -37,6 +37,8 @@ public:
 
 private:
     /// Registers `name` bound to `storage`; when given, `apply(description, storage)` sets its part.
+    /// Whether `addOptions` registers option `name` (all of them, or those its `only` list names).
+    bool wanted(std::string_view name) const;
     template <typename T, typename Apply>
     CLI::Option* bind(CLI::App& cmd, const std::string& name, T& storage, const std::string& help, Apply apply);
 

@@ -99,15 +99,13 @@ struct IntegratorDescription {
     uint32_t lightSamples = 1;   ///< light samples per path vertex (0: BSDF sampling alone)
 };
 
-/// The AOV layers a film may keep beside its colour (the layer groups of an .exr output).
-inline constexpr auto& kFilmLayers = kFilmLayerNames;
 
 struct FilmDescription {
     uint32_t width = 1280, height = 720;
     float exposure = -0.6f;            ///< stops
     std::string output = "urbis.png"; ///< the image; its extension picks the format
-    /// Layers of kFilmLayers an .exr output holds besides RGBA (a .png holds none).
-    std::vector<std::string> layers{std::begin(kFilmLayers), std::end(kFilmLayers)};
+    /// Layers of kFilmLayerNames (film/film_layers.h) an .exr output holds besides RGBA (a .png holds none).
+    std::vector<std::string> layers{std::begin(kFilmLayerNames), std::end(kFilmLayerNames)};
     bool exrFloat = false;             ///< an .exr's colour, albedo and normal as float rather than half
 };
 

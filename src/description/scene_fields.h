@@ -91,7 +91,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.number("height", d.film.height, 1u, kMaxImageSide);
         v.number("exposure", d.film.exposure, -20.0f, 20.0f);
         v.text("output", d.film.output);
-        v.choiceList("layers", d.film.layers, std::span(kFilmLayers));
+        v.choiceList("layers", d.film.layers, std::span(kFilmLayerNames));
         v.boolean("exr_float", d.film.exrFloat);
     });
 }

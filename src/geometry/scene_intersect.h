@@ -27,7 +27,7 @@ URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyH
         return intersectSlot<KindFilter::Costly>(scene, tr, slot, r, h, anyHit);
     };
     if (scene.costlyLeaves) traverseBvh<true, Defer>(scene.nodes.data, tr.bvh, ray, hit, anyHit, testCheap, testCostly);
-    else traverseBvh<false>(scene.nodes.data, tr.bvh, ray, hit, anyHit, testCheap, testCheap);
+    else traverseBvh(scene.nodes.data, tr.bvh, ray, hit, anyHit, testCheap);
     if (!hit.valid()) return {};
     SurfaceHit out;
     if (anyHit) {

@@ -22,7 +22,7 @@ URBIS_HD inline AovSample aovOfCameraRay(const SceneView& scene, const Camera& c
     out.surface = true;
     out.albedo = scene.materials[hit.material].albedo;
     out.normal = hit.normal;
-    out.position = ray.origin + ray.dir * hit.t;
+    out.position = hit.position;
     out.depth = hit.t * dot(ray.dir, camera.forward);
     return out;
 }

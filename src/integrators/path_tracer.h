@@ -101,7 +101,6 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
     PathSample out;
     Vec3f throughput{1, 1, 1};
     BounceInfo bounce;
-    bool cameraRay = true;          // the camera does not show the sun's disk
     PathVertex vertex;
     Ray ray = pathRay;
     Vec3f shadowContribution;       // what the shadow ray in flight adds if nothing blocks it
@@ -117,17 +116,20 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             // The sky, and the sun's disk: found by BSDF sampling, weighed against light sampling
             // (their pdfs only where the weight needs them: not for camera rays and specular bounces).
             const Vec3f dir = normalize(ray.dir);
-            const LightRecord sky{LightKind::Sky, 0, 0.0f}, sun{LightKind::Sun, 0, 0.0f};
+            const LightRecord sky{LightKind::Sky, 0, 0.0f};
             float skyWeight = 1.0f;
             if (!bounce.countsInFull && lights.skyLight != kNoLight)
                 skyWeight = bsdfFoundWeight(bounce, settings.lightSamples,
                                             lightSelectionPmf(lights, settings.lightSampler, lights.skyLight),
                                             lightPdf(scene, sky, dir, 0.0f, 0.0f));
             out.radiance += throughput * skyRadiance(scene.sky, dir) * skyWeight;
-            if (!cameraRay && sunEnabled(scene.sun) && sunContains(scene.sun, dir)) {
-                const float sunWeight = bsdfFoundWeight(bounce, settings.lightSamples,
-                                                        lightSelectionPmf(lights, settings.lightSampler, lights.sunLight),
-                                                        lightPdf(scene, sun, dir, 0.0f, 0.0f));
+            // The camera ray (depth 0) does not show the sun's disk.
+            if (depth > 0 && sunEnabled(scene.sun) && sunContains(scene.sun, dir)) {
+                float sunWeight = 1.0f;
+                if (!bounce.countsInFull)
+                    sunWeight = bsdfFoundWeight(bounce, settings.lightSamples,
+                                                lightSelectionPmf(lights, settings.lightSampler, lights.sunLight),
+                                                sunPdf(scene.sun));
                 out.radiance += throughput * scene.sun.radiance * sunWeight;
             }
             pathEnds = true;
@@ -145,7 +147,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                                                       dot(hit.normal, dir)));
                 out.radiance += throughput * material.emission * weight;
             }
-            vertex.position = ray.origin + ray.dir * hit.t;
+            vertex.position = hit.position;
             vertex.normal = hit.normal;
             vertex.wo = -dir;
             vertex.throughput = throughput;
@@ -178,7 +180,6 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                               bsdf.dir};
                 ++depth;
             }
-            cameraRay = false;
         }
         // The next ray: the vertex's pending light samples first, then the path's own.
         tracingShadow = false;

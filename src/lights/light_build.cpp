@@ -118,7 +118,8 @@ void addEmissiveSurfaces(const Scene& scene, BuiltLights& lights, float& area) {
 
 void buildLights(Scene& scene, const LightBuildOptions& options) {
     BuiltLights lights;
-    const double disk = double(kPi) * double(sceneRadius(scene)) * double(sceneRadius(scene));
+    const double radius = sceneRadius(scene);
+    const double disk = double(kPi) * radius * radius;
     if (options.sun && sunEnabled(scene.sun)) {
         lights.info.sunLight = uint32_t(lights.records.size());
         const double solidAngle = 1.0 / double(sunPdf(scene.sun));

@@ -41,13 +41,13 @@ URBIS_HD inline float samplePiecewiseConstant1D(const PiecewiseConstant1DView& d
 
 /// A cell index drawn with probability func[i] / sum(func) (the discrete use of the same table), and
 /// that probability.
-URBIS_HD inline uint32_t sampleDiscrete(const PiecewiseConstant1DView& d, float u, float& pmf) {
-    uint32_t cell = findCell(d, u);
-    pmf = d.integral > 0.0f ? d.func[cell] / (d.integral * float(d.n)) : 0.0f;
-    return cell;
-}
 URBIS_HD inline float discretePmf(const PiecewiseConstant1DView& d, uint32_t cell) {
     return d.integral > 0.0f ? d.func[cell] / (d.integral * float(d.n)) : 0.0f;
+}
+URBIS_HD inline uint32_t sampleDiscrete(const PiecewiseConstant1DView& d, float u, float& pmf) {
+    const uint32_t cell = findCell(d, u);
+    pmf = discretePmf(d, cell);
+    return cell;
 }
 
 /// A 2D distribution of nu x nv cells over [0, 1)^2: per row v a conditional 1D table in u, and a

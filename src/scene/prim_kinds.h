@@ -50,7 +50,10 @@ inline constexpr bool kCostlyKind = PrimRecord<I>::kBvhCost > 1;
 /// Whether kind `I` hangs from the BVH's root rather than being built into the tree: a record that
 /// says so (the ground: see attachLeafAtRoot).
 template <uint32_t I>
-inline constexpr bool kKindAtBvhRoot = requires { PrimRecord<I>::kBvhAtRoot; };
+inline constexpr bool kKindAtBvhRoot = [] {
+    if constexpr (requires { PrimRecord<I>::kBvhAtRoot; }) return PrimRecord<I>::kBvhAtRoot;
+    else return false;
+}();
 
 /// The tag a fold over the kinds passes: the kind index as a constant.
 template <uint32_t I>

@@ -49,14 +49,6 @@ struct Scene {
                        const std::vector<GroundRecord>& grounds = {});
     SceneView view() const;
     SceneMemory memory() const;
-
-    /// f(const char* statsKey, const std::vector<T>& array) for every array.
-    template <typename F>
-    void forEachArray(F&& f) const {
-#define URBIS_SCENE_EACH(Type, name, key) f(key, name);
-        URBIS_SCENE_ARRAYS(URBIS_SCENE_EACH)
-#undef URBIS_SCENE_EACH
-    }
 };
 
 } // namespace urbis

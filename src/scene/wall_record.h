@@ -74,8 +74,8 @@ struct WallRecord {
     URBIS_HD float gridWidth() const { return slotWidth * float(slots); }
     URBIS_HD float gridHeight() const { return floorHeight * float(floors); }
     /// u of the grid's right edge and v of its top (exact: they decide hits).
-    URBIS_HD float gridU1() const { return exactMulAdd(slotWidth, float(slots), gridU); }
-    URBIS_HD float gridV1() const { return exactMulAdd(floorHeight, float(floors), gridV); }
+    URBIS_HD float gridU1() const { return slotU(slots); }
+    URBIS_HD float gridV1() const { return floorV(floors); }
     /// u of slot `slot`'s left edge and v of floor `floor`'s bottom (exact).
     URBIS_HD float slotU(int slot) const { return exactMulAdd(slotWidth, float(slot), gridU); }
     URBIS_HD float floorV(int floor) const { return exactMulAdd(floorHeight, float(floor), gridV); }
