@@ -39,11 +39,13 @@ LAYERS = {
     "model": 9,         # the city model: buildings, parts, polygons, the reasons buildings were dropped
     "osm": 10,          # OpenStreetMap import into the city model
     "layout": 10,       # procedurally generated cities as a city model
-    "citygen": 11,      # city model -> meshes and scene records (buildings, roofs, facades)
-    "description": 12,  # the scene description and its JSON scene files
-    "cpu": 13,          # the CPU backend (TBB)
-    "gpu": 13,          # the CUDA backend; shares nothing with cpu/ but what lies below both
-    "app": 14,          # the urbis command
+    "streets": 11,      # city model -> street meshes and records: roads, junctions, sidewalks, markings
+                        # records, crossings, bridges, railways, ground cover, water, street lamps
+    "citygen": 12,      # city model -> meshes and scene records (buildings, roofs, facades), streets joined in
+    "description": 13,  # the scene description and its JSON scene files
+    "cpu": 14,          # the CPU backend (TBB)
+    "gpu": 14,          # the CUDA backend; shares nothing with cpu/ but what lies below both
+    "app": 15,          # the urbis command
 }
 
 # The portability header sits under everything: any folder may include it, math/ of its own rank too.

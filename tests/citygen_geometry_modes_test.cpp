@@ -1,6 +1,6 @@
 // --geometry parsing, and what each wall representation puts in the scene.
 #include "citygen/city_mesher.h"
-#include "citygen/geometry_modes.h"
+#include "scene/geometry_modes.h"
 #include "layout/city_layout.h"
 #include "base/input_error.h"
 

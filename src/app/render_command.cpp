@@ -90,6 +90,7 @@ BuildSummary summarise(const CityModel& city, const CityMesh& mesh) {
     s.source = city.source;
     s.buildings = city.buildings.size();
     s.counts = countsJson(city);
+    for (const auto& [kind, n] : mesh.streetCounts) s.counts[kind] = n;
     // Import and meshing use their own reasons (docs/cli.md); the meshed roofs' fallbacks count as repairs.
     s.dropped = mesh.dropped;
     s.repaired = nlohmann::json::object();
@@ -132,6 +133,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
     p.scene = Scene::build(mesh.mesh, std::move(mesh.materials), mesh.walls, *wallTileSizeOf(d.geometry.wallTiles),
                            {GroundRecord::around(centre.x, centre.z, 0.0f, mesh.groundMaterial)});
+    p.scene.roadSegments = std::move(mesh.roadSegments);
     p.scene.sun = sunOf(d.sun);
     p.scene.sky = skyOf(d.sky);
     buildLights(p.scene);

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "app/scene_options.h"
-#include "citygen/geometry_modes.h"
+#include "scene/geometry_modes.h"
 #include "description/scene_description.h"
 #include "scene/camera.h"
 #include "scene/scene.h"

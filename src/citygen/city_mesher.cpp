@@ -5,6 +5,8 @@
 #include "base/input_error.h"
 #include "scene/memory_budget.h"
 #include "scene/surface_part.h"
+#include "streets/street_materials.h"
+#include "streets/street_mesher.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -141,6 +143,23 @@ void meshWallTwins(const CityMeshOptions& options, CityMesh& out) {
     out.walls.shrink_to_fit();
 }
 
+/// Joins the streets (streets/street_mesher.h) to the buildings: their materials after the buildings',
+/// their objects after the buildings' ids.
+void addStreets(const CityModel& city, const CityMeshOptions& options, CityMesh& out) {
+    StreetOptions streetOptions;
+    streetOptions.lamps = options.geometry.lamps;
+    streetOptions.firstMaterial = uint32_t(out.materials.size());
+    streetOptions.firstObject = uint32_t(city.buildings.size() + 1);
+    streetOptions.americanMarkings = city.origin.valid && city.origin.lon < -30.0;
+    for (const Material& m : streetMaterials()) out.materials.push_back(m);
+    StreetMesh streets = meshStreets(city, streetOptions);
+    out.mesh.append(streets.mesh);
+    out.roadSegments = std::move(streets.roadSegments);
+    for (const auto& [kind, n] : streets.trianglesByKind) out.trianglesByKind[kind] += n;
+    for (const auto& [reason, n] : streets.dropped) out.dropped[reason] += n;
+    out.streetCounts = std::move(streets.counts);
+}
+
 } // namespace
 
 CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
@@ -192,6 +211,7 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     out.groundMaterial = groundMaterial;
     out.trianglesByKind = {{"walls", walls}, {"roofs", roofs}};
     if (options.geometry.walls == Representation::Triangles) meshWallTwins(options, out);
+    if (options.streets) addStreets(city, options, out);
     return out;
 }
 

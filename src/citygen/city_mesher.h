@@ -2,12 +2,14 @@
 // twin) and roof, and the ground's material.
 #pragma once
 
-#include "citygen/geometry_modes.h"
+#include "scene/geometry_modes.h"
 #include "scene/triangle_mesh.h"
 #include "scene/wall_record.h"
 #include "math/bounds.h"
 #include "model/city_model.h"
+#include "scene/geometry_modes.h"
 #include "scene/material.h"
+#include "scene/road_segment.h"
 
 #include <map>
 #include <string>
@@ -25,6 +27,7 @@ struct CityMaterials {
 struct CityMeshOptions {
     GeometryModes geometry;   ///< walls=plain: each building a closed mass model (every edge shared)
     CityMaterials materials;
+    bool streets = true;      ///< roads, sidewalks, ground cover, lamps (streets/); false: buildings on the bare ground
     /// Bytes the triangle twin may take to build; 0: the memory available now.
     size_t memoryLimit = 0;
 };
@@ -32,11 +35,13 @@ struct CityMeshOptions {
 struct CityMesh {
     TriangleMesh mesh;
     std::vector<WallRecord> walls;             ///< procedural walls (empty with walls=triangles)
+    std::vector<RoadSegment> roadSegments;     ///< the carriageways' markings (streets/street_mesh.h)
     std::vector<Material> materials;
     uint32_t groundMaterial = 0;               ///< the ground plane's entry in materials
-    Bounds3f cityBounds;                       ///< world bounds of the buildings (ground excluded)
+    Bounds3f cityBounds;                       ///< world bounds of the buildings (ground and streets excluded)
     std::vector<Bounds3f> framingPieces;       ///< bounds of the buildings in columns of a grid over cityBounds: its shape, for frameCity
     std::map<std::string, size_t> trianglesByKind;
+    std::map<std::string, uint64_t> streetCounts;  ///< street objects made, by kind (StreetMesh::counts)
     size_t facadeWalls = 0;                    ///< walls with a facade, in either representation
     size_t facadeCells = 0;                    ///< their floors x slots
     /// Buildings that could not be meshed, by reason: meshBuilding's, or "mesh_failed" where meshing threw.

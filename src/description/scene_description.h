@@ -5,7 +5,7 @@
 #pragma once
 
 #include "citygen/city_mesher.h"
-#include "citygen/geometry_modes.h"
+#include "scene/geometry_modes.h"
 #include "film/film_layers.h"
 #include "scene/sky.h"
 #include "math/vec.h"

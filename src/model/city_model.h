@@ -87,26 +87,81 @@ enum class HighwayClass : uint8_t {
 
 enum class Sidewalk : uint8_t { Unknown, None, Left, Right, Both, Separate };
 
+/// `surface=*` of a road, a path or a paved area, grouped by how it looks.
+enum class RoadSurface : uint8_t {
+    Asphalt, Concrete, PavingStones, Sett, Cobblestone, Gravel, Dirt, Grass, Wood, Metal, Unknown
+};
+
+/// `footway=*` of a footway: a sidewalk mapped as its own way, a crossing, or neither.
+enum class FootwayKind : uint8_t { None, Sidewalk, Crossing };
+
 struct Road {
     int64_t osmId = 0;
+    /// Counter-clockwise along the way's direction (oneway=-1 already flipped). Shared OSM nodes are
+    /// shared points: equal coordinates, bit for bit, are one node of the street graph.
     std::vector<Vec2d> centerline;
     HighwayClass highway = HighwayClass::Residential;
     float width = 6.0f;           ///< m, carriageway; from `width` or estimated from lanes and class
-    int lanes = 2;
+    int lanes = 2;                ///< all lanes of the carriageway
+    int lanesForward = 0;         ///< `lanes:forward`; 0 when untagged (then split from `lanes`)
+    int lanesBackward = 0;        ///< `lanes:backward`; 0 when untagged
     Sidewalk sidewalk = Sidewalk::Unknown;
+    float sidewalkLeftWidth = 0;  ///< m, `sidewalk:left:width` / `sidewalk:both:width`; 0 when untagged
+    float sidewalkRightWidth = 0; ///< m, `sidewalk:right:width` / `sidewalk:both:width`; 0 when untagged
+    RoadSurface surface = RoadSurface::Unknown;  ///< `surface`; Unknown: the class's default
+    FootwayKind footway = FootwayKind::None;
     bool oneway = false;
+    bool laneMarkings = true;     ///< false for `lane_markings=no`
+    bool overtaking = true;       ///< false for `overtaking=no`: a solid centre line
+    bool area = false;            ///< `area=yes` (a pedestrian square drawn as a closed way)
+    int layer = 0;
+    bool bridge = false;
+    bool tunnel = false;          ///< `tunnel=*` other than no (building_passage included)
+    bool covered = false;         ///< `covered=yes`
+    bool underground = false;     ///< `location=underground`
+};
+
+/// `crossing=*` of a crossing node, by how it is painted.
+enum class CrossingKind : uint8_t { Zebra, Marked, Unmarked, TrafficSignals };
+
+/// A pedestrian crossing: a `highway=crossing` node (or a `railway=crossing`), a vertex of the roads it crosses.
+struct Crossing {
+    int64_t osmId = 0;
+    Vec2d position;
+    CrossingKind kind = CrossingKind::Marked;
+};
+
+enum class RailKind : uint8_t { Rail, LightRail, Tram, Subway, Narrow };
+
+struct Railway {
+    int64_t osmId = 0;
+    std::vector<Vec2d> centerline;
+    RailKind kind = RailKind::Rail;
+    float gauge = 1.435f;         ///< m, from `gauge` (mm)
+    bool embedded = false;        ///< rails set in the street (`embedded=yes`, trams by default)
     int layer = 0;
     bool bridge = false;
     bool tunnel = false;
+    bool covered = false;
+    bool underground = false;
 };
 
+/// How a street lamp is held: `lamp_mount` / `support`.
+enum class LampMount : uint8_t { Pole, BentMast, Wall, Suspended, Ground };
+
+/// The shape of a lamp's head: from `lamp_type` / `light:shape` (and the mount).
+enum class LampHead : uint8_t { Cobra, Globe, Lantern, Cone, Flat };
+
 struct Lamp {
-    int64_t osmId = 0;
+    int64_t osmId = 0;            ///< 0 if placed by urbis
     Vec2d position;
     float height = 6.0f;          ///< m, from `height` or `lamp_mount` defaults
     std::string lampType;         ///< `lamp_type` / `light:method`, as tagged
+    LampMount mount = LampMount::Pole;
+    LampHead head = LampHead::Cobra;
+    float direction = -1.0f;      ///< degrees clockwise from north the head leans to; -1: towards the road
     int lightCount = 1;           ///< `light:count`
-    float colourTemperature = 0;  ///< K, from `light:colour`; 0 if unknown
+    float colourTemperature = 0;  ///< K, from `light:colour` or the lamp's method; 0 if unknown
 };
 
 struct Tree {
@@ -116,11 +171,17 @@ struct Tree {
     float crownDiameter = 5.0f;
 };
 
-enum class AreaKind : uint8_t { Park, Grass, Forest, Water };
+/// What covers an area of the ground, by the tag that says so (ground_cover in streets/ draws them).
+enum class AreaKind : uint8_t {
+    Park, Grass, Forest, Water, Residential, Commercial, Industrial, Pitch, Playground, Sand, Scrub,
+    Parking, Pedestrian, Cemetery, Farmland
+};
 
 struct Area {
     int64_t osmId = 0;
     AreaKind kind = AreaKind::Park;
+    RoadSurface surface = RoadSurface::Unknown;  ///< `surface` of paved areas (pedestrian, parking)
+    int layer = 0;
     Polygon polygon;
 };
 
@@ -139,6 +200,8 @@ struct GeoOrigin {
 struct CityModel {
     std::vector<Building> buildings;
     std::vector<Road> roads;
+    std::vector<Crossing> crossings;
+    std::vector<Railway> railways;
     std::vector<Lamp> lamps;
     std::vector<Tree> trees;
     std::vector<Area> areas;

@@ -1,7 +1,7 @@
 #include "osm/building_parts.h"
 
 #include "model/polygon_ops.h"
-#include "osm/cell_grid.h"
+#include "model/cell_grid.h"
 
 #include <algorithm>
 

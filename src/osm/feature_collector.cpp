@@ -134,7 +134,10 @@ void FeatureCollector::addPolygonFeature(PolygonRole role, const osmium::TagList
                                          std::vector<GeoPolygon> polygons, const char* problem) {
     const TagLookup lookup = lookupIn(tags);
     if (role == PolygonRole::Area) {
-        RawArea a{Area{osmId, *areaKindFromTags(lookup), {}}, std::move(polygons), problem};
+        Area attributes;
+        attributes.osmId = osmId;
+        attributes.kind = *areaKindFromTags(lookup);
+        RawArea a{attributes, std::move(polygons), problem};
         out_.areas.push_back(std::move(a));
         return;
     }

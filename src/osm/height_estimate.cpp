@@ -3,7 +3,7 @@
 #include "math/quantile.h"
 #include "model/polygon_ops.h"
 #include "osm/building_tags.h"
-#include "osm/cell_grid.h"
+#include "model/cell_grid.h"
 #include "osm/height_table.h"
 
 #include <algorithm>

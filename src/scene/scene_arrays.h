@@ -7,6 +7,7 @@
 #include "scene/light_records.h"
 #include "scene/material.h"
 #include "scene/prim_kinds.h"
+#include "scene/road_segment.h"
 
 #include <cstdint>
 
@@ -18,6 +19,7 @@
     X(WallRecord, walls, "walls")                      \
     X(GroundRecord, grounds, "grounds")                \
     X(Material, materials, "materials")                \
+    X(RoadSegment, roadSegments, "road_segments")      \
     X(LightRecord, lightRecords, "light_records")      \
     X(float, lightPower, "light_power")                \
     X(EmissiveSurface, emissiveSurfaces, "emissive_surfaces") \

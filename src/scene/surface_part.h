@@ -17,6 +17,20 @@ enum class SurfacePart : uint8_t {
     Railing,
     Mullion,      ///< the frame of a curtain wall
     Spandrel,     ///< the opaque panel between two floors of a curtain wall
+    Road,         ///< a carriageway; its triangles' object is a RoadSegment (markings are a function of the hit)
+    Junction,     ///< the polygon where three or more roads meet
+    Sidewalk,     ///< a sidewalk's top, a footway, a paved area
+    Curb,         ///< the curb's face between a carriageway and its sidewalk
+    GroundCover,  ///< landuse, leisure and natural areas over the ground
+    Water,
+    BridgeDeck,   ///< a bridge's sides and underside (its top is Road or Sidewalk)
+    Parapet,
+    Pier,
+    Ballast,
+    Rail,
+    LampPole,     ///< a street lamp's pole and arm
+    LampHead,
+    LampGlass,    ///< the lamp's emitting glass
     Count
 };
 

@@ -1,3 +1,3 @@
-// Rejected: cpu/ and gpu/ share rank 13 and may not include each other.
+// Rejected: cpu/ and gpu/ share rank 14 and may not include each other.
 #pragma once
 #include "gpu/backend.h"

@@ -15,11 +15,12 @@ enum class Representation : unsigned char { Procedural, Triangles, Plain };
 struct GeometryModes {
     Representation walls = Representation::Procedural;   ///< facades
     Representation roofs = Representation::Procedural;
+    Representation lamps = Representation::Procedural;   ///< street lamps: analytic, or their triangle twin (never plain)
 };
 
 /// Parses `--geometry`: "procedural", "triangles" or "plain" for every kind, or a list of KIND=MODE
-/// ("walls=triangles,roofs=procedural"; kinds: walls, roofs; also buildings=MODE for both) over
-/// the procedural default. Throws InputError naming the option on anything else.
+/// ("walls=triangles,roofs=procedural,lamps=triangles"; kinds: walls, roofs, lamps; also
+/// buildings=MODE for walls and roofs) over the procedural default; plain lamps are their triangles. Throws InputError naming the option on anything else.
 GeometryModes parseGeometryModes(const std::string& text);
 
 /// "procedural", "triangles" or "plain".

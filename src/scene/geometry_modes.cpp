@@ -1,4 +1,4 @@
-#include "citygen/geometry_modes.h"
+#include "scene/geometry_modes.h"
 
 #include "base/input_error.h"
 
@@ -21,7 +21,7 @@ GeometryModes parseGeometryModes(const std::string& text) {
     GeometryModes modes;
     if (text.find('=') == std::string::npos) {
         const Representation r = parseRepresentation(text, text);
-        return GeometryModes{r, r};
+        return GeometryModes{r, r, r};
     }
     std::stringstream list(text);
     std::string item;
@@ -32,8 +32,9 @@ GeometryModes parseGeometryModes(const std::string& text) {
         const Representation r = parseRepresentation(item.substr(eq + 1), text);
         if (kind == "walls") modes.walls = r;
         else if (kind == "roofs") modes.roofs = r;
-        else if (kind == "buildings") modes = GeometryModes{r, r};
-        else throw InputError("--geometry: unknown kind '" + kind + "' (kinds: walls, roofs, buildings)", FailureKind::Usage);
+        else if (kind == "lamps") modes.lamps = r;
+        else if (kind == "buildings") modes.walls = modes.roofs = r;
+        else throw InputError("--geometry: unknown kind '" + kind + "' (kinds: walls, roofs, lamps, buildings)", FailureKind::Usage);
     }
     return modes;
 }
