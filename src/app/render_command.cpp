@@ -112,6 +112,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     meshOptions.geometry = p.geometry = d.geometry.modes;
     meshOptions.materials = d.materials.city;
     meshOptions.memoryLimit = memoryLimit;
+    meshOptions.streets = d.geometry.streets;
     CityMesh mesh;
     {
         auto t0 = Clock::now();

@@ -116,7 +116,7 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
     // geometry
     text_.geometry = "procedural";
     withDefault(bind(cmd, "--geometry", text_.geometry,
-                     "procedural|triangles|plain for every kind, or KIND=MODE,... (kinds: walls, roofs, buildings); "
+                     "procedural|triangles|plain for every kind, or KIND=MODE,... (kinds: walls, roofs, lamps, buildings); "
                      "plain: no facades",
                      [](SceneDescription& d, const std::string& text) { d.geometry.modes = parseGeometryModes(text); }));
     withDefault(bind(cmd, "--wall-tiles", v.geometry.wallTiles,
@@ -127,6 +127,10 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
                                               FailureKind::Usage);
                          d.geometry.wallTiles = text;
                      }));
+    if (wanted("--no-streets")) {
+        CLI::Option* flag = cmd.add_flag("--no-streets", noStreets_, "Buildings on the bare ground: no roads, sidewalks, ground cover, water or lamps");
+        overrides_.emplace_back(flag, [](SceneDescription& d) { d.geometry.streets = false; });
+    }
 
     // integrator
     range(bind(cmd, "--spp", v.integrator.spp, "Samples per pixel",

@@ -48,6 +48,7 @@ private:
         std::string bbox, heightRange, camera, cameraGeo, sun, geometry;
     } text_;
     std::string sceneFile_, saveScene_;
+    bool noStreets_ = false;   ///< --no-streets
     std::vector<std::string_view> only_;
     std::vector<std::pair<const CLI::Option*, std::function<void(SceneDescription&)>>> overrides_;
 };

@@ -84,6 +84,7 @@ struct MaterialsDescription {
 struct GeometryDescription {
     GeometryModes modes;
     std::string wallTiles = "whole";   ///< "whole" or "SLOTSxFLOORS" (wallTileSizeOf)
+    bool streets = true;               ///< roads, sidewalks, ground cover, water and lamps; false: buildings on the bare ground
 };
 
 /// The integrator and its parameters. `lightSampler` picks among the lights ("uniform" or

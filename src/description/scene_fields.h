@@ -74,7 +74,9 @@ void visitSceneFields(Description& d, Visitor& v) {
     v.object("geometry", [&] {
         v.enumeration("walls", d.geometry.modes.walls, kRepresentationNames);
         v.enumeration("roofs", d.geometry.modes.roofs, kRepresentationNames);
+        v.enumeration("lamps", d.geometry.modes.lamps, kRepresentationNames);
         v.text("wall_tiles", d.geometry.wallTiles);
+        v.boolean("streets", d.geometry.streets);
     });
     v.object("integrator", [&] {
         v.choice("kind", d.integrator.kind, std::span(kIntegratorKinds));
