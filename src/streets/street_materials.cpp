@@ -16,7 +16,11 @@ Material glossy(Vec3f albedo, float specular, float exponent) {
 std::vector<Material> streetMaterials() {
     // Albedos of real surfaces (linear): fresh asphalt ~0.05, worn ~0.12; concrete ~0.3; grass ~0.1-0.2;
     // road paint ~0.6-0.7 (white), ~0.45 (yellow).
-    Material water{Vec3f{0.02f, 0.04f, 0.05f}, MaterialKind::Glass};
+    // Water: a thin dielectric pane (Schlick's Fresnel for n = 1.33: 2 % reflected looking down, most
+    // of the sky at grazing angles) whose straight transmission, tinted blue-green as a few metres of
+    // water tint daylight, ends on the dark bed (WaterBed) below it.
+    Material water{Vec3f{0.35f, 0.55f, 0.60f}, MaterialKind::Glass};
+    water.ior = 1.33f;
     std::vector<Material> m = {
         diffuse(0.09f, 0.09f, 0.10f),   // Asphalt
         diffuse(0.30f, 0.29f, 0.27f),   // Concrete
@@ -53,8 +57,9 @@ std::vector<Material> streetMaterials() {
         glossy(Vec3f{0.08f, 0.09f, 0.09f}, 0.15f, 40.0f),  // LampMetal
         glossy(Vec3f{0.20f, 0.20f, 0.21f}, 0.15f, 40.0f),  // LampHousing
         diffuse(0.80f, 0.78f, 0.70f),   // LampGlass
+        diffuse(0.02f, 0.03f, 0.03f),   // WaterBed
     };
-    static_assert(uint32_t(StreetMaterial::Count) == 35, "one material per StreetMaterial");
+    static_assert(uint32_t(StreetMaterial::Count) == 36, "one material per StreetMaterial");
     return m;
 }
 
