@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <numbers>
 #include <set>
+#include <stdexcept>
 
 using namespace urbis;
 
@@ -257,10 +258,15 @@ TEST(StreetsGroundCover, APileDeeperThanTheBandIsCutAtItsTop) {
 TEST(StreetsGroundCover, StackPlanesPilesOnlyWhatOverlaps) {
     // 0 under 1 under 2; 3 overlaps only 0; 4 overlaps nothing.
     const std::set<std::pair<size_t, size_t>> overlapping = {{1, 0}, {2, 1}, {2, 0}, {3, 0}};
+    const std::vector<PlaneBox> sameBox(5, PlaneBox{Vec2d{0, 0}, Vec2d{1, 1}});
     const std::vector<int> planes =
-        stackPlanes(5, 3, [&](size_t i, size_t j) { return overlapping.count({i, j}) > 0; });
+        stackPlanes(sameBox, 3, [&](size_t i, size_t j) { return overlapping.count({i, j}) > 0; });
     EXPECT_EQ(planes, (std::vector<int>{0, 1, 2, 1, 0}));
-    EXPECT_EQ(stackPlanes(3, 2, [](size_t, size_t) { return true; }), (std::vector<int>{0, 1, -1}));
+    EXPECT_EQ(stackPlanes({sameBox.begin(), sameBox.begin() + 3}, 2, [](size_t, size_t) { return true; }),
+              (std::vector<int>{0, 1, -1}));
+    // Boxes apart (or only touching) are never asked.
+    const std::vector<PlaneBox> apart = {{Vec2d{0, 0}, Vec2d{1, 1}}, {Vec2d{1, 0}, Vec2d{2, 1}}, {Vec2d{5, 5}, Vec2d{6, 6}}};
+    EXPECT_EQ(stackPlanes(apart, 3, [](size_t, size_t) -> bool { throw std::logic_error("asked"); }), (std::vector<int>{0, 0, 0}));
 }
 
 // A coastline-sized ring of 40,000 points: triangulated in pieces of a few hundred points (GEOS's

@@ -46,7 +46,9 @@ void stackBand(std::vector<CoverItem>& items, const CoverShapes& shapes, const C
         if (items[i].kept && (items[i].style.band == band || (band == Band::Ground && items[i].style.band == Band::Water)))
             order.push_back(i);
     sortBottomFirst(order, items, city);
-    const std::vector<int> plane = stackPlanes(order.size(), planesBetween(base, ceiling, kCoverStep), [&](size_t a, size_t b) {
+    std::vector<PlaneBox> boxes;
+    for (const size_t i : order) boxes.push_back(shapes.box(items[i].shape));
+    const std::vector<int> plane = stackPlanes(boxes, planesBetween(base, ceiling, kCoverStep), [&](size_t a, size_t b) {
         return shapes.overlap(items[order[a]].shape, items[order[b]].shape);
     });
     for (size_t k = 0; k < order.size(); ++k) {
