@@ -25,7 +25,9 @@ using namespace urbis;
 
 namespace {
 
-Ring square(double x0, double y0, double side) { return {{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}}; }
+Ring square(double x0, double y0, double side) {
+    return {{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}};
+}
 
 Area areaOf(AreaKind kind, Polygon polygon, int64_t id = 1) {
     Area a;
@@ -266,7 +268,8 @@ TEST(StreetsGroundCover, StackPlanesPilesOnlyWhatOverlaps) {
               (std::vector<int>{0, 1, -1}));
     // Boxes apart (or only touching) are never asked.
     const std::vector<PlaneBox> apart = {{Vec2d{0, 0}, Vec2d{1, 1}}, {Vec2d{1, 0}, Vec2d{2, 1}}, {Vec2d{5, 5}, Vec2d{6, 6}}};
-    EXPECT_EQ(stackPlanes(apart, 3, [](size_t, size_t) -> bool { throw std::logic_error("asked"); }), (std::vector<int>{0, 0, 0}));
+    const auto never = [](size_t, size_t) -> bool { throw std::logic_error("asked"); };
+    EXPECT_EQ(stackPlanes(apart, 3, never), (std::vector<int>{0, 0, 0}));
 }
 
 // A coastline-sized ring of 40,000 points: triangulated in pieces of a few hundred points (GEOS's

@@ -37,8 +37,8 @@ void sortBottomFirst(std::vector<size_t>& order, const std::vector<CoverItem>& i
     });
 }
 
-/// Puts the kept items of `band` (the ground's also takes the water beds) on the planes from `base` below `ceiling`, piled as stackPlanes says;
-/// those whose pile is too deep are dropped.
+/// Puts the kept items of `band` (the ground's takes the water beds too) on the planes from `base`
+/// below `ceiling`, piled as stackPlanes says; those whose pile is too deep are dropped.
 void stackBand(std::vector<CoverItem>& items, const CoverShapes& shapes, const CityModel& city, Band band, float base,
                float ceiling, StreetMesh& out) {
     std::vector<size_t> order;
@@ -131,10 +131,14 @@ void meshGroundCover(const CityModel& city, const StreetOptions& options, Street
             ++out.dropped["area_triangulation_failed"];
             continue;
         }
-        const TriangleInfo info{options.firstMaterial + uint32_t(item.style.material), object, uint32_t(item.style.part)};
+        auto infoOf = [&](StreetMaterial m, SurfacePart part) {
+            return TriangleInfo{options.firstMaterial + uint32_t(m), object, uint32_t(part)};
+        };
+        const TriangleInfo info = infoOf(item.style.material, item.style.part);
         if (item.style.band == Band::Water) {
-            const TriangleInfo bed{options.firstMaterial + uint32_t(StreetMaterial::WaterBed), object, uint32_t(SurfacePart::Water)};
-            waterTriangles += addFlat(triangles, kWaterLevel, info, out.mesh) + addFlat(triangles, item.level, bed, out.mesh);
+            const TriangleInfo bed = infoOf(StreetMaterial::WaterBed, SurfacePart::Water);
+            waterTriangles += addFlat(triangles, kWaterLevel, info, out.mesh);
+            waterTriangles += addFlat(triangles, item.level, bed, out.mesh);
             ++waterAreas;
         } else {
             groundTriangles += addFlat(triangles, item.level, info, out.mesh);

@@ -30,7 +30,8 @@ int planesBetween(float base, float ceiling, float step) {
     return int(std::ceil((ceiling - base) / step - 1e-3f));
 }
 
-std::vector<int> stackPlanes(const std::vector<PlaneBox>& boxes, int planes, const std::function<bool(size_t, size_t)>& overlap) {
+std::vector<int> stackPlanes(const std::vector<PlaneBox>& boxes, int planes,
+                             const std::function<bool(size_t, size_t)>& overlap) {
     std::vector<int> plane(boxes.size(), -1);
     if (boxes.empty()) return plane;
     const PlaneBox all = unionOf(boxes);
@@ -43,7 +44,8 @@ std::vector<int> stackPlanes(const std::vector<PlaneBox>& boxes, int planes, con
             if (seenBy[j] != i && boxesOverlap(boxes[i], boxes[j])) near.push_back(j);
             seenBy[j] = i;
         });
-        std::sort(near.begin(), near.end(), [&](uint32_t a, uint32_t b) { return plane[a] != plane[b] ? plane[a] > plane[b] : a < b; });
+        std::sort(near.begin(), near.end(),
+                  [&](uint32_t a, uint32_t b) { return plane[a] != plane[b] ? plane[a] > plane[b] : a < b; });
         int level = 0;
         for (const uint32_t j : near)
             if (overlap(i, j)) {

@@ -20,6 +20,7 @@ int planesBetween(float base, float ceiling, float step);
 /// `planes` or above: it is left out, and nothing rests on it. The earlier items near an item come
 /// from a grid (model/cell_grid.h) and are asked from the highest plane down, stopping at the first
 /// overlap: 20,000 areas take a fraction of a second, not the minutes of all pairs.
-std::vector<int> stackPlanes(const std::vector<PlaneBox>& boxes, int planes, const std::function<bool(size_t, size_t)>& overlap);
+std::vector<int> stackPlanes(const std::vector<PlaneBox>& boxes, int planes,
+                             const std::function<bool(size_t, size_t)>& overlap);
 
 } // namespace urbis
