@@ -15,8 +15,13 @@ Material glossy(Vec3f albedo, float specular, float exponent) {
 
 std::vector<Material> streetMaterials() {
     // Albedos of real surfaces (linear): fresh asphalt ~0.05, worn ~0.12; concrete ~0.3; grass ~0.1-0.2;
-    // road paint ~0.6-0.7 (white), ~0.45 (yellow).
-    Material water{Vec3f{0.02f, 0.04f, 0.05f}, MaterialKind::Glass};
+    // road paint ~0.6-0.7 (white), ~0.45 (yellow); mown grass ~0.1-0.16 in green, about 1.6 times its red
+    // (greener reads as paint once tone-mapped).
+    // Water: a thin dielectric pane (Schlick's Fresnel for n = 1.33: 2 % reflected looking down, most
+    // of the sky at grazing angles) whose straight transmission, tinted blue-green as a few metres of
+    // water tint daylight, ends on the dark bed (WaterBed) below it.
+    Material water{Vec3f{0.35f, 0.55f, 0.60f}, MaterialKind::Glass};
+    water.ior = 1.33f;
     std::vector<Material> m = {
         diffuse(0.09f, 0.09f, 0.10f),   // Asphalt
         diffuse(0.30f, 0.29f, 0.27f),   // Concrete
@@ -32,18 +37,18 @@ std::vector<Material> streetMaterials() {
         glossy(Vec3f{0.60f, 0.42f, 0.05f}, 0.05f, 20.0f),  // PaintYellow
         diffuse(0.32f, 0.31f, 0.29f),   // Sidewalk
         diffuse(0.40f, 0.39f, 0.37f),   // Curb
-        diffuse(0.07f, 0.15f, 0.04f),   // Park
-        diffuse(0.09f, 0.17f, 0.05f),   // Lawn
-        diffuse(0.06f, 0.08f, 0.03f),   // ForestFloor
+        diffuse(0.08f, 0.13f, 0.05f),   // Park
+        diffuse(0.10f, 0.16f, 0.06f),   // Lawn
+        diffuse(0.06f, 0.08f, 0.04f),   // ForestFloor
         diffuse(0.16f, 0.16f, 0.14f),   // ResidentialGround
         diffuse(0.20f, 0.19f, 0.18f),   // CommercialGround
         diffuse(0.22f, 0.21f, 0.19f),   // IndustrialGround
-        diffuse(0.06f, 0.20f, 0.06f),   // Pitch
+        diffuse(0.07f, 0.17f, 0.06f),   // Pitch
         diffuse(0.35f, 0.25f, 0.15f),   // Playground
         diffuse(0.45f, 0.40f, 0.30f),   // Sand
-        diffuse(0.10f, 0.13f, 0.06f),   // Scrub
+        diffuse(0.10f, 0.12f, 0.06f),   // Scrub
         diffuse(0.12f, 0.12f, 0.13f),   // Parking
-        diffuse(0.08f, 0.14f, 0.05f),   // Cemetery
+        diffuse(0.09f, 0.13f, 0.06f),   // Cemetery
         diffuse(0.20f, 0.18f, 0.09f),   // Farmland
         water,                          // Water
         diffuse(0.35f, 0.34f, 0.32f),   // BridgeConcrete
@@ -53,8 +58,9 @@ std::vector<Material> streetMaterials() {
         glossy(Vec3f{0.08f, 0.09f, 0.09f}, 0.15f, 40.0f),  // LampMetal
         glossy(Vec3f{0.20f, 0.20f, 0.21f}, 0.15f, 40.0f),  // LampHousing
         diffuse(0.80f, 0.78f, 0.70f),   // LampGlass
+        diffuse(0.02f, 0.03f, 0.03f),   // WaterBed
     };
-    static_assert(uint32_t(StreetMaterial::Count) == 35, "one material per StreetMaterial");
+    static_assert(uint32_t(StreetMaterial::Count) == 36, "one material per StreetMaterial");
     return m;
 }
 

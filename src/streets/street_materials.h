@@ -20,6 +20,7 @@ enum class StreetMaterial : uint32_t {
     BridgeConcrete, Parapet,
     Ballast, RailSteel,
     LampMetal, LampHousing, LampGlass,
+    WaterBed,                     // the dark bottom under a water surface
     Count
 };
 

@@ -1,11 +1,12 @@
 #include "streets/street_mesher.h"
 
+#include "streets/ground_cover.h"
+
 namespace urbis {
 
 StreetMesh meshStreets(const CityModel& city, const StreetOptions& options) {
     StreetMesh out;
-    (void)city;
-    (void)options;
+    meshGroundCover(city, options, out);
     return out;
 }
 
