@@ -246,7 +246,10 @@ TEST(LayoutStreets, SameSeedSameStreetsAndABiggerCityKeepsTheCentre) {
     };
     const std::set<Piece> a = pieces(small), b = pieces(big);
     ASSERT_GT(a.size(), 100u);
-    for (const Piece& p : a) EXPECT_TRUE(b.count(p)) << "a central segment of the smaller city is not in the bigger";
+    for (const Piece& p : a)
+        EXPECT_TRUE(b.count(p)) << "the smaller city's segment (" << std::get<0>(p).first << ", " << std::get<0>(p).second
+                                << ") - (" << std::get<1>(p).first << ", " << std::get<1>(p).second << "), class "
+                                << std::get<2>(p) << ", is not in the bigger";
     std::set<std::pair<PointKey, int>> crossingsA, crossingsB;
     for (const Crossing& c : small.crossings)
         if (inCentre(c.position)) crossingsA.insert({keyOf(c.position), int(c.kind)});

@@ -42,8 +42,11 @@ struct Event {
 
 // Crossings of segment a-b with the grid lines of one axis that carry a road there, inserted into
 // those roads; each point moves onto the grid junction when one is within kSnap of the segment.
-void crossLines(Vec2d a, Vec2d b, const std::vector<GridLine>& lines, const std::vector<GridLine>& across,
-                bool northSouth, std::vector<Road>& gridRoads, const LineRoads& index, std::vector<Event>& events) {
+// A segment of a diagonal through (0, 0) in direction `diagonal` is crossed where the whole
+// diagonal is, whatever its length, so that a larger city has the same points.
+void crossLines(Vec2d a, Vec2d b, const Vec2d* diagonal, const std::vector<GridLine>& lines,
+                const std::vector<GridLine>& across, bool northSouth, std::vector<Road>& gridRoads,
+                const LineRoads& index, std::vector<Event>& events) {
     auto coord = [&](Vec2d v) { return northSouth ? v.x : v.y; };  // across the lines
     auto other = [&](Vec2d v) { return northSouth ? v.y : v.x; };  // along the lines
     const double ca = coord(a), cb = coord(b);
@@ -56,7 +59,8 @@ void crossLines(Vec2d a, Vec2d b, const std::vector<GridLine>& lines, const std:
     for (auto line = first; line != lines.end() && line->position <= hi; ++line) {
         const double t = (line->position - ca) / (cb - ca);
         // At an end of the segment, the end itself: a vertex shared with the next segment.
-        const double along = line->position == ca   ? other(a)
+        const double along = diagonal           ? line->position * (other(*diagonal) / coord(*diagonal))
+                             : line->position == ca ? other(a)
                              : line->position == cb ? other(b)
                                                     : other(a) + t * (other(b) - other(a));
         auto near = std::lower_bound(across.begin(), across.end(), along,
@@ -137,7 +141,8 @@ void joinPair(Road& a, Road& b) {
 
 } // namespace
 
-void joinArterials(const StreetGrid& grid, std::vector<Road>& gridRoads, std::vector<Road>& arterialRoads) {
+void joinArterials(const StreetGrid& grid, const Arterials& arterials, std::vector<Road>& gridRoads,
+                   std::vector<Road>& arterialRoads) {
     std::vector<GridLine> xs, ys;
     for (int k = -grid.half(); k <= grid.half(); ++k) {
         xs.push_back(grid.xLine(k));
@@ -149,15 +154,16 @@ void joinArterials(const StreetGrid& grid, std::vector<Road>& gridRoads, std::ve
         if (c.front().x == c.back().x) northSouth[c.front().x].push_back(r);
         else eastWest[c.front().y].push_back(r);
     }
-    for (Road& arterial : arterialRoads) {
-        const std::vector<Vec2d>& line = arterial.centerline;
+    for (size_t a = 0; a < arterialRoads.size(); ++a) {
+        const std::vector<Vec2d>& line = arterialRoads[a].centerline;
+        const Vec2d* diagonal = a < arterials.diagonals.size() ? &arterials.diagonals[a] : nullptr;
         std::vector<std::vector<Event>> events(line.size());
         for (size_t i = 0; i + 1 < line.size(); ++i) {
-            crossLines(line[i], line[i + 1], xs, ys, true, gridRoads, northSouth, events[i]);
-            crossLines(line[i], line[i + 1], ys, xs, false, gridRoads, eastWest, events[i]);
-            std::sort(events[i].begin(), events[i].end(), [](const Event& a, const Event& b) { return a.t < b.t; });
+            crossLines(line[i], line[i + 1], diagonal, xs, ys, true, gridRoads, northSouth, events[i]);
+            crossLines(line[i], line[i + 1], diagonal, ys, xs, false, gridRoads, eastWest, events[i]);
+            std::sort(events[i].begin(), events[i].end(), [](const Event& x, const Event& y) { return x.t < y.t; });
         }
-        arterial.centerline = withJunctions(line, events);
+        arterialRoads[a].centerline = withJunctions(line, events);
     }
     for (size_t a = 0; a < arterialRoads.size(); ++a)
         for (size_t b = a + 1; b < arterialRoads.size(); ++b) joinPair(arterialRoads[a], arterialRoads[b]);

@@ -13,7 +13,8 @@ namespace urbis {
 /// arterials cross each other into both. A crossing within 1 m of a grid junction moves onto it
 /// (kArterialMargin in street_grid.cpp leaves room for that), so that three roads meet there
 /// rather than a sliver of road between two junctions; the ring's own vertices within 1 m of a
-/// junction go for the same reason.
-void joinArterials(const StreetGrid& grid, std::vector<Road>& gridRoads, std::vector<Road>& arterialRoads);
+/// junction go for the same reason. `arterialRoads` are `arterials.roads(...)`: the diagonals first.
+void joinArterials(const StreetGrid& grid, const Arterials& arterials, std::vector<Road>& gridRoads,
+                   std::vector<Road>& arterialRoads);
 
 } // namespace urbis

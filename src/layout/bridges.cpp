@@ -28,17 +28,17 @@ bool crossesVertical(const std::vector<Road>& roads, double x, double y0, double
     return false;
 }
 
-// The stretches of `line` over water, as (from, to) in metres along it, in order.
-std::vector<std::pair<double, double>> wetStretches(const std::vector<Vec2d>& line, const River& river) {
-    std::vector<std::pair<double, double>> out;
-    const std::vector<double> along = distancesAlong(line);
-    bool wet = false;
-    double from = 0;
+bool before(Spot a, Spot b) { return a.segment != b.segment ? a.segment < b.segment : a.offset < b.offset; }
+
+// The stretches of `line` over water, as (from, to) spots, in order.
+std::vector<std::pair<Spot, Spot>> wetStretches(const std::vector<Vec2d>& line, const River& river) {
+    std::vector<std::pair<Spot, Spot>> out;
+    bool wet = river.distance(line[0]) < 0;
+    Spot from;
     for (size_t i = 0; i + 1 < line.size(); ++i) {
         const Vec2d a = line[i], b = line[i + 1];
-        const double len = along[i + 1] - along[i];
+        const double len = std::hypot(b.x - a.x, b.y - a.y);
         auto at = [&](double t) { return Vec2d{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; };
-        if (i == 0) wet = river.distance(a) < 0;
         if (!wet && river.distance(a) + river.distance(b) > kRate * len) continue;  // dry all along
         const int steps = std::max(1, static_cast<int>(std::ceil(len / kSampleStep)));
         for (int k = 1; k <= steps; ++k) {
@@ -48,13 +48,14 @@ std::vector<std::pair<double, double>> wetStretches(const std::vector<Vec2d>& li
                 const double mid = 0.5 * (lo + hi);
                 ((river.distance(at(mid)) < 0) == wet ? lo : hi) = mid;
             }
-            const double edge = along[i] + hi * len;
+            const Spot edge{i, hi * len};
             if (wet) out.push_back({from, edge});
             else from = edge;
             wet = !wet;
         }
     }
-    if (wet) out.push_back({from, along.back()});
+    if (wet) out.push_back({from, Spot{line.size() - 2, std::hypot(line.back().x - line[line.size() - 2].x,
+                                                                  line.back().y - line[line.size() - 2].y)}});
     return out;
 }
 
@@ -90,19 +91,18 @@ void splitBridges(std::vector<Road>& roads, const River& river) {
     std::vector<Road> out;
     out.reserve(roads.size());
     for (Road& road : roads) {
-        const double length = distancesAlong(road.centerline).back();
-        std::vector<std::pair<double, double>> spans;
-        for (auto [from, to] : wetStretches(road.centerline, river)) {
-            from = std::max(0.0, from - kBridgeLanding);
-            to = std::min(length, to + kBridgeLanding);
-            if (!spans.empty() && from <= spans.back().second) spans.back().second = to;
+        std::vector<std::pair<Spot, Spot>> spans;
+        for (auto [wetFrom, wetTo] : wetStretches(road.centerline, river)) {
+            const Spot from = advance(road.centerline, wetFrom, -kBridgeLanding);
+            const Spot to = advance(road.centerline, wetTo, kBridgeLanding);
+            if (!spans.empty() && !before(spans.back().second, from)) spans.back().second = to;
             else spans.push_back({from, to});
         }
         if (spans.empty()) {
             out.push_back(std::move(road));
             continue;
         }
-        std::vector<double> cuts;
+        std::vector<Spot> cuts;
         for (auto [from, to] : spans) {
             cuts.push_back(from);
             cuts.push_back(to);

@@ -4,35 +4,46 @@
 
 namespace urbis {
 
-std::vector<double> distancesAlong(const std::vector<Vec2d>& line) {
-    std::vector<double> out(line.size(), 0.0);
-    for (size_t i = 1; i < line.size(); ++i)
-        out[i] = out[i - 1] + std::hypot(line[i].x - line[i - 1].x, line[i].y - line[i - 1].y);
-    return out;
+namespace {
+
+double lengthOf(const std::vector<Vec2d>& line, size_t segment) {
+    return std::hypot(line[segment + 1].x - line[segment].x, line[segment + 1].y - line[segment].y);
 }
 
-CutCenterline cutAt(const std::vector<Vec2d>& line, const std::vector<double>& distances, double reuse) {
+} // namespace
+
+Spot advance(const std::vector<Vec2d>& line, Spot from, double metres) {
+    Spot s = from;
+    double left = s.offset + metres;  // from vertex s.segment
+    while (left < 0 && s.segment > 0) left += lengthOf(line, --s.segment);
+    while (left > lengthOf(line, s.segment) && s.segment + 2 < line.size()) left -= lengthOf(line, s.segment++);
+    s.offset = std::fmax(0.0, std::fmin(left, lengthOf(line, s.segment)));
+    return s;
+}
+
+CutCenterline cutAt(const std::vector<Vec2d>& line, const std::vector<Spot>& spots, double reuse) {
     CutCenterline out;
-    const std::vector<double> along = distancesAlong(line);
-    size_t next = 0;  // the next distance to place
+    size_t next = 0;  // the next spot to place
     for (size_t i = 0; i < line.size(); ++i) {
-        // Distances before vertex i: on the segment from i - 1, or served by a vertex close by.
-        for (; next < distances.size() && distances[next] <= along[i] + reuse; ++next) {
-            const double s = distances[next];
-            if (!out.points.empty() && s - along[i - 1] <= reuse) {
-                out.vertexAt.push_back(out.points.size() - 1);
-            } else if (along[i] - s <= reuse) {
-                out.vertexAt.push_back(out.points.size());  // vertex i, pushed below
+        out.points.push_back(line[i]);
+        if (i + 1 == line.size()) break;
+        const double len = lengthOf(line, i);
+        for (; next < spots.size() && spots[next].segment == i; ++next) {
+            const double s = spots[next].offset;
+            if (s <= reuse) {
+                out.vertexAt.push_back(out.points.size() - 1);  // vertex i
+            } else if (len - s <= reuse) {
+                out.vertexAt.push_back(out.points.size());  // vertex i + 1, pushed next
             } else {
-                const double f = (s - along[i - 1]) / (along[i] - along[i - 1]);
-                const Vec2d &a = line[i - 1], &b = line[i];
-                out.vertexAt.push_back(out.points.size());
-                out.points.push_back({a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)});
+                const double f = s / len;
+                const Vec2d &a = line[i], &b = line[i + 1];
+                const Vec2d p{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
+                const Vec2d& last = out.points.back();
+                if (std::hypot(p.x - last.x, p.y - last.y) > reuse) out.points.push_back(p);
+                out.vertexAt.push_back(out.points.size() - 1);
             }
         }
-        out.points.push_back(line[i]);
     }
-    for (; next < distances.size(); ++next) out.vertexAt.push_back(out.points.size() - 1);  // past the end
     return out;
 }
 

@@ -168,7 +168,7 @@ CityModel generateCity(const LayoutParams& params) {
     city.buildings = buildingsOn(plan.lots, params, plan.radius);
     std::vector<Road> arterialRoads = arterials.roads(plan.radius);
     city.roads = plan.grid.roads(plan.used, riverGridFilter(plan.grid, river, arterialRoads, params.seed));
-    joinArterials(plan.grid, city.roads, arterialRoads);
+    joinArterials(plan.grid, arterials, city.roads, arterialRoads);
     const size_t gridRoads = city.roads.size();
     for (Road& r : arterialRoads) city.roads.push_back(std::move(r));
     plantStreetTrees(city, gridRoads, plan.grid, arterials, river);

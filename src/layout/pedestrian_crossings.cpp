@@ -107,12 +107,13 @@ bool carriesTraffic(HighwayClass c) {
 std::vector<Crossing> placeCrossings(std::vector<Road>& roads, uint32_t seed, const River& river) {
     const Junctions junctions(roads);
     const uint32_t key = hash2(seed, 0xc7055u);
-    std::vector<std::vector<std::pair<double, CrossingKind>>> wanted(roads.size());
+    std::vector<std::vector<std::pair<Spot, CrossingKind>>> wanted(roads.size());
     for (size_t r = 0; r < roads.size(); ++r) {
         const Road& road = roads[r];
         if (!carriesTraffic(road.highway)) continue;
         const std::vector<Vec2d>& c = road.centerline;
-        const std::vector<double> along = distancesAlong(c);
+        std::vector<double> along(c.size(), 0.0);  // m from the start, to compare room with clearances
+        for (size_t i = 1; i < c.size(); ++i) along[i] = along[i - 1] + std::hypot(c[i].x - c[i - 1].x, c[i].y - c[i - 1].y);
         const size_t last = c.size() - 1;
         std::vector<std::vector<Visit>> others(c.size());
         for (size_t i = 0; i < c.size(); ++i) others[i] = junctions.others(r, i);
@@ -135,7 +136,7 @@ std::vector<Crossing> placeCrossings(std::vector<Road>& roads, uint32_t seed, co
                     room -= dj + kBetweenCrossings;
                 }
                 if (room < d) continue;
-                const double s = along[i] + step * d;
+                const Spot s = advance(c, {i == last ? last - 1 : i, i == last ? along[last] - along[last - 1] : 0.0}, step * d);
                 CrossingKind kind = CrossingKind::Zebra;
                 if (road.highway == HighwayClass::Secondary) kind = CrossingKind::Marked;
                 if (road.highway == HighwayClass::Primary) {
@@ -150,12 +151,14 @@ std::vector<Crossing> placeCrossings(std::vector<Road>& roads, uint32_t seed, co
     std::vector<Crossing> out;
     for (size_t r = 0; r < roads.size(); ++r) {
         if (wanted[r].empty()) continue;
-        std::sort(wanted[r].begin(), wanted[r].end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        std::vector<double> distances;
-        for (const auto& w : wanted[r]) distances.push_back(w.first);
-        CutCenterline cut = cutAt(roads[r].centerline, distances, kReuseVertex);
+        std::sort(wanted[r].begin(), wanted[r].end(), [](const auto& a, const auto& b) {
+            return a.first.segment != b.first.segment ? a.first.segment < b.first.segment : a.first.offset < b.first.offset;
+        });
+        std::vector<Spot> spots;
+        for (const auto& w : wanted[r]) spots.push_back(w.first);
+        CutCenterline cut = cutAt(roads[r].centerline, spots, kReuseVertex);
         roads[r].centerline = std::move(cut.points);
-        for (size_t k = 0; k < distances.size(); ++k) {
+        for (size_t k = 0; k < spots.size(); ++k) {
             Crossing crossing;
             crossing.position = roads[r].centerline[cut.vertexAt[k]];
             crossing.kind = wanted[r][k].second;

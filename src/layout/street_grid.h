@@ -70,7 +70,8 @@ struct Arterials {
     bool blocks(const Rect2d& r) const;
     /// How many arterial roads (with their sidewalks) cover p (metres).
     int corridorsAt(Vec2d p) const;
-    /// The arterials as roads clipped to the disc of radius `cityRadius` metres around (0, 0).
+    /// The arterials as roads clipped to the disc of radius `cityRadius` metres around (0, 0): the
+    /// diagonals in order, then the ring.
     std::vector<Road> roads(double cityRadius) const;
 };
 
