@@ -74,10 +74,8 @@ struct Segment {
     Vec2d a, b;
 };
 
-} // namespace
-
-TEST(LayoutStreets, RoadsShareAVertexAtEveryCrossing) {
-    const CityModel& city = bigCity();
+// Two roads of `city` never meet except at a vertex of both; the arterials meet the grid there.
+void expectSharedVerticesAtCrossings(const CityModel& city) {
     constexpr double kCell = 60.0;
     std::vector<Segment> segments;
     std::map<std::pair<long, long>, std::vector<size_t>> cells;
@@ -115,6 +113,16 @@ TEST(LayoutStreets, RoadsShareAVertexAtEveryCrossing) {
         }
     }
     EXPECT_GT(arterialJunctions, 20u);
+}
+
+} // namespace
+
+TEST(LayoutStreets, RoadsShareAVertexAtEveryCrossing) {
+    expectSharedVerticesAtCrossings(bigCity());
+    for (uint32_t seed : {1u, 2u, 4u}) {
+        SCOPED_TRACE(seed);
+        expectSharedVerticesAtCrossings(cityOf(12'000, seed));
+    }
 }
 
 TEST(LayoutStreets, LanesSidewalksAndSurfacesByClass) {
