@@ -1,10 +1,12 @@
-// Generated city: footprints are valid polygons that overlap neither each other nor any road.
+// Generated city: footprints are valid polygons that overlap neither each other, nor any road
+// with its sidewalks, nor the water.
 #include "layout/city_layout.h"
 #include "layout/street_grid.h"
 
 #include <geos_c.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -41,14 +43,15 @@ public:
     GEOSGeometry* solid(const Ring& r) { return keep(GEOSGeom_createPolygon_r(ctx_, ring(r), nullptr, 0)); }
     // The road's carriageway and sidewalks, shrunk by 1 mm so that touching is not overlapping.
     GEOSGeometry* corridor(const Road& road) {
-        GEOSCoordSequence* seq = sequence(road.centerline, false);
-        GEOSGeometry* line = GEOSGeom_createLineString_r(ctx_, seq);
-        GEOSGeometry* area = GEOSBufferWithStyle_r(ctx_, line, 0.5 * road.width + kSidewalkWidth - 1e-3, 8,
+        GEOSGeometry* line = GEOSGeom_createLineString_r(ctx_, sequence(road.centerline, false));
+        const double sidewalk = std::max(road.sidewalkLeftWidth, road.sidewalkRightWidth);
+        GEOSGeometry* area = GEOSBufferWithStyle_r(ctx_, line, 0.5 * road.width + sidewalk - 1e-3, 8,
                                                    GEOSBUF_CAP_FLAT, GEOSBUF_JOIN_ROUND, 5.0);
         GEOSGeom_destroy_r(ctx_, line);
         return keep(area);
     }
     GEOSGeometry* point(Vec2d p) { return keep(GEOSGeom_createPointFromXY_r(ctx_, p.x, p.y)); }
+    GEOSGeometry* line(const std::vector<Vec2d>& pts) { return keep(GEOSGeom_createLineString_r(ctx_, sequence(pts, false))); }
 
 private:
     GEOSCoordSequence* sequence(const std::vector<Vec2d>& pts, bool close) {
@@ -176,14 +179,43 @@ TEST_F(LayoutGeometry, FootprintsStayOffRoadsAndSidewalks) {
     EXPECT_GT(arterials, 0u) << "a city this size has a ring road";
 }
 
-TEST_F(LayoutGeometry, LampsTreesAndParksAreNotInBuildings) {
-    ASSERT_FALSE(city_->lamps.empty());
+TEST_F(LayoutGeometry, TreesAndAreasAreNotInBuildings) {
+    EXPECT_TRUE(city_->lamps.empty()) << "streets/ places the lamps";
     ASSERT_FALSE(city_->trees.empty());
     ASSERT_FALSE(city_->areas.empty());
-    for (const Lamp& l : city_->lamps) EXPECT_TRUE(hits(geos_.point(l.position)).empty());
     for (const Tree& t : city_->trees) EXPECT_TRUE(hits(geos_.point(t.position)).empty());
+    size_t water = 0;
     for (const Area& a : city_->areas) {
         EXPECT_GT(signedArea(a.polygon.outer), 0.0);
-        EXPECT_TRUE(hits(geos_.polygon(a.polygon)).empty());
+        EXPECT_TRUE(hits(geos_.polygon(a.polygon)).empty()) << "area of kind " << int(a.kind);
+        water += a.kind == AreaKind::Water ? 1 : 0;
     }
+    EXPECT_EQ(water, 1u) << "the river runs through a city this size";
+}
+
+TEST_F(LayoutGeometry, EveryRoadOverTheWaterIsABridge) {
+    const Area* river = nullptr;
+    for (const Area& a : city_->areas)
+        if (a.kind == AreaKind::Water) river = &a;
+    ASSERT_NE(river, nullptr);
+    GEOSGeometry* water = geos_.polygon(river->polygon);
+    size_t bridges = 0;
+    for (size_t r = 0; r < city_->roads.size(); ++r) {
+        const Road& road = city_->roads[r];
+        GEOSGeometry* line = geos_.line(road.centerline);
+        if (!road.bridge) {
+            EXPECT_EQ(GEOSIntersects_r(geos_.ctx(), line, water), 0) << "road " << r << " runs over the water";
+            continue;
+        }
+        ++bridges;
+        EXPECT_EQ(road.layer, 1);
+        EXPECT_EQ(GEOSIntersects_r(geos_.ctx(), line, water), 1) << "bridge " << r << " spans no water";
+        // Each end lands on the bank, about 15 m from the water, where an approach (or a dead end) meets it.
+        for (Vec2d end : {road.centerline.front(), road.centerline.back()}) {
+            double d = 0;
+            GEOSDistance_r(geos_.ctx(), geos_.point(end), water, &d);
+            EXPECT_GT(d, 5.0) << "bridge " << r;
+        }
+    }
+    EXPECT_GT(bridges, 3u);
 }

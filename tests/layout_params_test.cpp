@@ -42,19 +42,25 @@ void expectSameCity(const CityModel& a, const CityModel& b) {
     for (size_t i = 0; i < a.roads.size(); ++i) {
         const Road &x = a.roads[i], &y = b.roads[i];
         ASSERT_TRUE(sameRing(x.centerline, y.centerline) && x.highway == y.highway && x.width == y.width &&
-                    x.lanes == y.lanes && x.sidewalk == y.sidewalk)
+                    x.lanes == y.lanes && x.lanesForward == y.lanesForward && x.lanesBackward == y.lanesBackward &&
+                    x.oneway == y.oneway && x.sidewalk == y.sidewalk && x.sidewalkLeftWidth == y.sidewalkLeftWidth &&
+                    x.sidewalkRightWidth == y.sidewalkRightWidth && x.surface == y.surface &&
+                    x.bridge == y.bridge && x.layer == y.layer && x.overtaking == y.overtaking)
             << "road " << i;
     }
+    ASSERT_EQ(a.crossings.size(), b.crossings.size());
+    for (size_t i = 0; i < a.crossings.size(); ++i)
+        ASSERT_TRUE(a.crossings[i].position.x == b.crossings[i].position.x &&
+                    a.crossings[i].position.y == b.crossings[i].position.y && a.crossings[i].kind == b.crossings[i].kind);
     ASSERT_EQ(a.lamps.size(), b.lamps.size());
-    for (size_t i = 0; i < a.lamps.size(); ++i)
-        ASSERT_TRUE(a.lamps[i].position.x == b.lamps[i].position.x && a.lamps[i].position.y == b.lamps[i].position.y &&
-                    a.lamps[i].height == b.lamps[i].height);
     ASSERT_EQ(a.trees.size(), b.trees.size());
     for (size_t i = 0; i < a.trees.size(); ++i)
         ASSERT_TRUE(a.trees[i].position.x == b.trees[i].position.x && a.trees[i].position.y == b.trees[i].position.y &&
                     a.trees[i].height == b.trees[i].height && a.trees[i].crownDiameter == b.trees[i].crownDiameter);
     ASSERT_EQ(a.areas.size(), b.areas.size());
-    for (size_t i = 0; i < a.areas.size(); ++i) ASSERT_TRUE(samePolygon(a.areas[i].polygon, b.areas[i].polygon));
+    for (size_t i = 0; i < a.areas.size(); ++i)
+        ASSERT_TRUE(samePolygon(a.areas[i].polygon, b.areas[i].polygon) && a.areas[i].kind == b.areas[i].kind &&
+                    a.areas[i].surface == b.areas[i].surface);
 }
 
 LayoutParams withCount(uint64_t n) {
@@ -119,8 +125,8 @@ TEST_P(LayoutCount, ExactlyTheTargetNumberOfBuildings) {
     auto t0 = std::chrono::steady_clock::now();
     CityModel city = generateCity(withCount(target));
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("generateCity(%llu buildings): %.3f s, %zu roads, %zu lamps, %zu trees, %zu parks\n",
-                static_cast<unsigned long long>(target), seconds, city.roads.size(), city.lamps.size(),
+    std::printf("generateCity(%llu buildings): %.3f s, %zu roads, %zu crossings, %zu trees, %zu areas\n",
+                static_cast<unsigned long long>(target), seconds, city.roads.size(), city.crossings.size(),
                 city.trees.size(), city.areas.size());
     EXPECT_EQ(city.buildings.size(), target);
     EXPECT_NEAR(static_cast<double>(city.buildings.size()), static_cast<double>(target), 0.05 * static_cast<double>(target));

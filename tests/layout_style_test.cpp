@@ -126,14 +126,3 @@ TEST(LayoutStyle, UsesAndRoofsByDistrict) {
     EXPECT_GT(countOf(BuildingType::Office, 0), 5 * countOf(BuildingType::Office, n - tenth) + 20);
     EXPECT_GT(countOf(BuildingType::House, n - tenth), 5 * countOf(BuildingType::House, 0) + 20);
 }
-
-TEST(LayoutStyle, LampsEveryThirtyMetresOrSo) {
-    CityModel c = city(2000);
-    double length = 0;
-    for (const Road& r : c.roads)
-        for (size_t i = 0; i + 1 < r.centerline.size(); ++i)
-            length += std::hypot(r.centerline[i + 1].x - r.centerline[i].x, r.centerline[i + 1].y - r.centerline[i].y);
-    const double perLamp = length / static_cast<double>(c.lamps.size());
-    EXPECT_GT(perLamp, 28.0);
-    EXPECT_LT(perLamp, 45.0);  // lamps on crossings are left out
-}

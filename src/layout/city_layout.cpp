@@ -1,8 +1,13 @@
 #include "layout/city_layout.h"
 
+#include "layout/arterial_junctions.h"
+#include "layout/bridges.h"
 #include "layout/building_style.h"
 #include "layout/footprint_shapes.h"
 #include "layout/lots.h"
+#include "layout/parks.h"
+#include "layout/pedestrian_crossings.h"
+#include "layout/river.h"
 #include "layout/street_furniture.h"
 #include "layout/street_grid.h"
 #include "math/hash.h"
@@ -24,15 +29,16 @@ namespace {
 // Ground area per building in square metres, roads included, measured on generated cities:
 // it sizes the first grid and the districts.
 constexpr double kAreaPerBuilding = 750.0;
-constexpr float kParkChance = 0.04f;          // per block, away from the arterials
+constexpr float kParkChance = 0.04f;          // per block, away from the arterials and the river
+constexpr float kPlazaChance = 0.05f;         // per block of the centre that is not a park
 constexpr double kParkAreaPerTree = 150.0;    // m^2
-constexpr double kLampSpacing = 30.0;         // m along a road, alternating sides
 constexpr double kStreetTreeSpacing = 12.0;   // m along a residential street, both sides
-constexpr double kLampFromKerb = 0.5;         // m onto the sidewalk
 constexpr double kTreeFromBuildings = 0.8;    // m from the sidewalk's outer edge
+constexpr double kRiverBank = 6.0;            // m (north-south) between the water and any lot
+constexpr double kTreeFromRiver = 20.0;       // m (north-south): none by the water or on a bridge
 
 // Streams of the counter-based hash, one per purpose.
-enum Purpose : uint32_t { BlockLots = 1, BlockPark, ParkTrees, BuildingSeed };
+enum Purpose : uint32_t { BlockLots = 1, BlockPark, ParkTrees, BuildingSeed, BlockPlaza };
 
 void validate(const LayoutParams& p) {
     if (p.buildings == 0) throw InputError("layout: the building count must be at least 1", FailureKind::Usage);
@@ -53,7 +59,7 @@ struct Plan {
     StreetGrid grid;
     std::vector<Lot> lots;       // one building each, in order from the centre outward
     std::vector<bool> used;      // per block, indexed as StreetGrid::roads expects
-    std::vector<Rect2d> parks;
+    std::vector<Rect2d> parks, plazas;
     double radius = 0;           // m, farthest corner of a used block from (0, 0)
 };
 
@@ -63,7 +69,8 @@ double farthestCorner(const Rect2d& r) {
 
 // Fills the blocks of `plan.grid` nearest to the centre first until there are `target` lots;
 // false if the grid is too small.
-bool fill(Plan& plan, const Arterials& arterials, uint64_t target, uint32_t seed, double districtRadius) {
+bool fill(Plan& plan, const Arterials& arterials, const River& river, uint64_t target, uint32_t seed,
+          double districtRadius) {
     const int half = plan.grid.half(), n = 2 * half;
     std::vector<std::pair<double, int>> order;
     order.reserve(static_cast<size_t>(n) * static_cast<size_t>(n));
@@ -81,15 +88,22 @@ bool fill(Plan& plan, const Arterials& arterials, uint64_t target, uint32_t seed
         const uint32_t key = hash3(seed, static_cast<uint32_t>(i), static_cast<uint32_t>(j));
         plan.used[static_cast<size_t>(index)] = true;
         plan.radius = std::max(plan.radius, farthestCorner(block));
-        if (rank > 0 && hashToUnit(hash2(key, BlockPark)) < kParkChance && !arterials.blocks(block)) {
-            plan.parks.push_back(block);
-            continue;
+        const District district = districtAt(std::sqrt(order[rank].first) / districtRadius);
+        if (rank > 0 && !arterials.blocks(block) && !river.near(block, kRiverBank)) {
+            if (hashToUnit(hash2(key, BlockPark)) < kParkChance) {
+                plan.parks.push_back(block);
+                continue;
+            }
+            if (district == District::Centre && hashToUnit(hash2(key, BlockPlaza)) < kPlazaChance) {
+                plan.plazas.push_back(block);
+                continue;
+            }
         }
         blockLots.clear();
-        const District district = districtAt(std::sqrt(order[rank].first) / districtRadius);
         subdivideBlock(block, district, hash2(key, BlockLots), blockLots);
         for (const Lot& lot : blockLots)
-            if (plan.lots.size() < target && !arterials.blocks(lot.bounds())) plan.lots.push_back(lot);
+            if (plan.lots.size() < target && !arterials.blocks(lot.bounds()) && !river.near(lot.bounds(), kRiverBank))
+                plan.lots.push_back(lot);
     }
     return plan.lots.size() == target;
 }
@@ -111,30 +125,20 @@ std::vector<Building> buildingsOn(const std::vector<Lot>& lots, const LayoutPara
     return out;
 }
 
-// Lamps on every road and trees along residential streets, on the sidewalks, leaving out
-// those that would stand on a crossing road.
-void furnishStreets(CityModel& city, size_t gridRoads, const StreetGrid& grid, const Arterials& arterials) {
-    for (size_t r = 0; r < city.roads.size(); ++r) {
+// Trees along residential streets, on the sidewalks, leaving out those that would stand on a
+// crossing road, by the water or on a bridge.
+void plantStreetTrees(CityModel& city, size_t gridRoads, const StreetGrid& grid, const Arterials& arterials,
+                      const River& river) {
+    for (size_t r = 0; r < gridRoads; ++r) {
         const Road& road = city.roads[r];
-        const bool isGrid = r < gridRoads;
-        const bool northSouth = isGrid && road.centerline[0].x == road.centerline[1].x;
-        auto onOtherRoad = [&](Vec2d p) {
-            if (!isGrid)
-                return grid.onNorthSouthRoad(p) || grid.onEastWestRoad(p) || arterials.corridorsAt(p) > 1;
-            return (northSouth ? grid.onEastWestRoad(p) : grid.onNorthSouthRoad(p)) || arterials.corridorsAt(p) > 0;
-        };
-        for (Vec2d p : pointsBeside(road, kLampSpacing, 0.5 * road.width + kLampFromKerb, true)) {
-            if (onOtherRoad(p)) continue;
-            Lamp lamp;
-            lamp.position = p;
-            lamp.height = isGrid ? 6.0f : 9.0f;
-            lamp.colourTemperature = isGrid ? 3000.0f : 4000.0f;
-            city.lamps.push_back(lamp);
-        }
         if (road.highway != HighwayClass::Residential) continue;
-        const double treeOffset = 0.5 * road.width + kSidewalkWidth - kTreeFromBuildings;
-        for (Vec2d p : pointsBeside(road, kStreetTreeSpacing, treeOffset, false)) {
-            if (onOtherRoad(p)) continue;
+        const bool northSouth = road.centerline[0].x == road.centerline[1].x;
+        auto offRoads = [&](Vec2d p) {
+            return !(northSouth ? grid.onEastWestRoad(p) : grid.onNorthSouthRoad(p)) && arterials.corridorsAt(p) == 0;
+        };
+        const double offset = 0.5 * road.width + road.sidewalkLeftWidth - kTreeFromBuildings;
+        for (Vec2d p : pointsBeside(road, kStreetTreeSpacing, offset)) {
+            if (!offRoads(p) || river.distance(p) < kTreeFromRiver) continue;
             Tree tree;
             tree.position = p;
             tree.height = 7.0f;
@@ -150,27 +154,35 @@ CityModel generateCity(const LayoutParams& params) {
     validate(params);
     const double estimatedRadius =
         std::sqrt(static_cast<double>(params.buildings) * kAreaPerBuilding / std::numbers::pi);
-    const Arterials arterials = Arterials::generate(params.seed, estimatedRadius);
+    const River river = River::generate(params.seed);
+    const Arterials arterials = Arterials::generate(params.seed, estimatedRadius, river);
     int half = static_cast<int>(estimatedRadius / 60.0) + 2;
-    Plan plan{StreetGrid(params.seed, half), {}, {}, {}, 0};
-    while (!fill(plan, arterials, params.buildings, params.seed, estimatedRadius)) {
+    Plan plan{StreetGrid(params.seed, half), {}, {}, {}, {}, 0};
+    while (!fill(plan, arterials, river, params.buildings, params.seed, estimatedRadius)) {
         half = half * 3 / 2 + 2;
-        plan = Plan{StreetGrid(params.seed, half), {}, {}, {}, 0};
+        plan = Plan{StreetGrid(params.seed, half), {}, {}, {}, {}, 0};
     }
 
     CityModel city;
     city.source = "generated";
     city.buildings = buildingsOn(plan.lots, params, plan.radius);
-    city.roads = plan.grid.roads(plan.used);
+    std::vector<Road> arterialRoads = arterials.roads(plan.radius);
+    city.roads = plan.grid.roads(plan.used, riverGridFilter(plan.grid, river, arterialRoads, params.seed));
+    joinArterials(plan.grid, arterials, city.roads, arterialRoads);
     const size_t gridRoads = city.roads.size();
-    for (Road& r : arterials.roads(plan.radius)) city.roads.push_back(std::move(r));
-    furnishStreets(city, gridRoads, plan.grid, arterials);
-    for (size_t k = 0; k < plan.parks.size(); ++k) {
-        Area area;
-        area.kind = AreaKind::Park;
-        area.polygon.outer = ringOf(plan.parks[k]);
-        city.areas.push_back(std::move(area));
-        plantPark(plan.parks[k], kParkAreaPerTree, hash3(params.seed, ParkTrees, static_cast<uint32_t>(k)), city.trees);
+    for (Road& r : arterialRoads) city.roads.push_back(std::move(r));
+    plantStreetTrees(city, gridRoads, plan.grid, arterials, river);
+    city.crossings = placeCrossings(city.roads, params.seed, river);
+    splitBridges(city.roads, river);
+    for (size_t k = 0; k < plan.parks.size(); ++k)
+        layOutPark(plan.parks[k], hash3(params.seed, ParkTrees, static_cast<uint32_t>(k)), kParkAreaPerTree, city);
+    for (size_t k = 0; k < plan.plazas.size(); ++k)
+        city.areas.push_back(plazaOn(plan.plazas[k], hash3(params.seed, BlockPlaza, static_cast<uint32_t>(k))));
+    if (river.reaches(plan.radius)) {
+        Area water;
+        water.kind = AreaKind::Water;
+        water.polygon.outer = river.polygon(-plan.radius, plan.radius);
+        city.areas.push_back(std::move(water));
     }
     return city;
 }

@@ -19,12 +19,15 @@ struct LayoutParams {
 inline constexpr uint64_t kMaxGeneratedBuildings = 10'000'000;
 
 /// A seeded procedural city in local metres (x east, y north) centred on (0, 0): a perturbed
-/// grid of avenues and streets with diagonal and ring arterials, blocks split into lots along
-/// their frontage, footprints (rectangle, L, T, U, courtyard) on the lots, heights falling off
-/// from the centre, parks, street lamps and trees. Blocks are filled from the centre outward
-/// until exactly `params.buildings` buildings exist. Deterministic: the same params give an
-/// identical CityModel. Throws InputError on impossible parameters (no buildings, more than
-/// kMaxGeneratedBuildings, a non-positive or non-finite height, min above max).
+/// grid of avenues and streets with diagonal and ring arterials, every road with the class,
+/// lanes, widths, sidewalks and surface an OSM import would give it and a vertex at every
+/// junction; pedestrian crossings near junctions; a river with bridges; blocks split into lots
+/// along their frontage, footprints (rectangle, L, T, U, courtyard) on the lots, heights falling
+/// off from the centre; parks with paths, plazas and trees. Street lamps are left to streets/,
+/// which places them on every city alike. Blocks are filled from the centre outward until exactly
+/// `params.buildings` buildings exist. Deterministic: the same params give an identical CityModel.
+/// Throws InputError on impossible parameters (no buildings, more than kMaxGeneratedBuildings, a
+/// non-positive or non-finite height, min above max).
 CityModel generateCity(const LayoutParams& params);
 
 } // namespace urbis

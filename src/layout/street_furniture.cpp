@@ -6,11 +6,10 @@
 
 namespace urbis {
 
-std::vector<Vec2d> pointsBeside(const Road& road, double spacing, double offset, bool alternate) {
+std::vector<Vec2d> pointsBeside(const Road& road, double spacing, double offset) {
     std::vector<Vec2d> out;
     double next = 0.5 * spacing;  // distance along the road of the next point
     double start = 0;             // distance along the road where the current segment starts
-    int side = 0;
     for (size_t i = 0; i + 1 < road.centerline.size(); ++i) {
         Vec2d a = road.centerline[i], b = road.centerline[i + 1];
         double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
@@ -19,9 +18,8 @@ std::vector<Vec2d> pointsBeside(const Road& road, double spacing, double offset,
         for (; next <= start + len; next += spacing) {
             double f = (next - start) / len;
             Vec2d p{a.x + f * dx, a.y + f * dy};
-            if (!alternate || side == 0) out.push_back({p.x + left.x, p.y + left.y});
-            if (!alternate || side == 1) out.push_back({p.x - left.x, p.y - left.y});
-            side ^= 1;
+            out.push_back({p.x + left.x, p.y + left.y});
+            out.push_back({p.x - left.x, p.y - left.y});
         }
         start += len;
     }

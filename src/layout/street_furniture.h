@@ -1,4 +1,4 @@
-// Street lamps and trees along roads, and trees in parks.
+// Trees along roads and in parks. (Street lamps are placed by streets/, for every city alike.)
 #pragma once
 
 #include "layout/layout_geometry.h"
@@ -10,8 +10,8 @@
 namespace urbis {
 
 /// Points beside `road`'s centerline every `spacing` metres of its length, starting half a
-/// spacing in, `offset` metres to its side: on alternating sides if `alternate`, else on both.
-std::vector<Vec2d> pointsBeside(const Road& road, double spacing, double offset, bool alternate);
+/// spacing in, `offset` metres to either side.
+std::vector<Vec2d> pointsBeside(const Road& road, double spacing, double offset);
 
 /// Trees scattered in a park (rectangle in metres), about one per `areaPerTree` square metres,
 /// kept 2 m inside its edge; `key` seeds positions and sizes (height 6-14 m, crown 4-8 m).

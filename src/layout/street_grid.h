@@ -3,25 +3,31 @@
 #pragma once
 
 #include "layout/layout_geometry.h"
+#include "layout/street_profile.h"
 #include "model/city_model.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace urbis {
 
-/// Width in metres of the sidewalk on each side of every generated road.
-inline constexpr double kSidewalkWidth = 2.5;
+class River;
 
-/// One straight grid line (a street running the whole grid) at a fixed x or y, in metres.
+/// One straight grid line (a street running the whole grid) at a fixed x or y, in metres: the main
+/// axes are 6-lane primaries, every 4th (north-south) or 3rd (east-west) line an avenue of 2 or 4
+/// lanes, the others residential, a quarter of them one-way with 1 or 2 lanes.
 struct GridLine {
     double position = 0;   ///< m, x of a north-south line or y of an east-west line
-    HighwayClass highway = HighwayClass::Residential;
-    float width = 7.0f;    ///< m, carriageway
-    int lanes = 2;
+    StreetProfile profile;
+    bool reversed = false; ///< a one-way street whose traffic runs south or west
     /// Distance in metres from the centerline to the far edge of the sidewalk.
-    double halfCorridor() const { return 0.5 * width + kSidewalkWidth; }
+    double halfCorridor() const { return profile.halfCorridor(); }
 };
+
+/// Whether segment `segment` of grid line `line` is a street: on a north-south line it runs from
+/// east-west line `segment` to the next, on an east-west line from north-south line `segment`.
+using GridSegmentFilter = std::function<bool(bool northSouth, int line, int segment)>;
 
 /// A seeded grid of `2 * half` x `2 * half` blocks around (0, 0). Line k of either axis
 /// (k in [-half, half]) depends only on the seed and k, so a larger grid extends a smaller one.
@@ -41,9 +47,9 @@ public:
     bool onNorthSouthRoad(Vec2d p) const;
     /// Whether p (metres) lies on an east-west grid road or its sidewalks.
     bool onEastWestRoad(Vec2d p) const;
-    /// Grid roads bordering the blocks marked in `used` (index (j + half) * 2 * half + i + half),
-    /// one Road per maximal run of segments along a line, with a vertex at every crossing.
-    std::vector<Road> roads(const std::vector<bool>& used) const;
+    /// Grid roads bordering the blocks marked in `used` (index (j + half) * 2 * half + i + half) where
+    /// `keep` says so, one Road per maximal run of segments along a line, with a vertex at every crossing.
+    std::vector<Road> roads(const std::vector<bool>& used, const GridSegmentFilter& keep) const;
 
 private:
     int half_;
@@ -54,19 +60,19 @@ private:
 struct Arterials {
     std::vector<Vec2d> diagonals;  ///< unit directions of straight roads through (0, 0)
     double ringRadius = 0;  ///< m around (0, 0); 0 when there is no ring
-    float width = 14.0f;    ///< m, carriageway of every arterial
-    int lanes = 4;
+    StreetProfile diagonal = streetProfile(HighwayClass::Primary, 6);
+    StreetProfile ring = streetProfile(HighwayClass::Primary, 4);
 
     /// Seeded arterials for a city of about `cityRadius` metres; fewer (or none) for small cities.
-    static Arterials generate(uint32_t seed, double cityRadius);
+    /// The ring meets the diagonals away from `river`, so that no junction is on a bridge.
+    static Arterials generate(uint32_t seed, double cityRadius, const River& river);
     /// Whether rectangle r (metres) comes within the road or sidewalks of an arterial.
     bool blocks(const Rect2d& r) const;
     /// How many arterial roads (with their sidewalks) cover p (metres).
     int corridorsAt(Vec2d p) const;
-    /// The arterials as roads clipped to the disc of radius `cityRadius` metres around (0, 0).
+    /// The arterials as roads clipped to the disc of radius `cityRadius` metres around (0, 0): the
+    /// diagonals in order, then the ring.
     std::vector<Road> roads(double cityRadius) const;
-    /// Distance in metres from a centerline to the far edge of its sidewalk.
-    double halfCorridor() const { return 0.5 * width + kSidewalkWidth; }
 };
 
 } // namespace urbis
