@@ -5,6 +5,8 @@
 #include "osm/geos_polygon.h"
 
 #include <algorithm>
+#include <string>
+#include <unordered_set>
 
 namespace urbis {
 
@@ -65,6 +67,7 @@ public:
             record(city_.dropped, dropKey(PolygonRole::Area, raw.problem), id);
             return;
         }
+        bool kept = false;
         for (const GeoPolygon& g : raw.polygons) {
             Area a = raw.attributes;
             bool repaired = false;
@@ -74,29 +77,35 @@ public:
             }
             if (repaired) record(city_.repaired, dropKey(PolygonRole::Area, "made_valid"), id);
             city_.areas.push_back(std::move(a));
+            kept = true;
         }
+        if (kept)
+            for (const auto& [issue, n] : raw.tagIssues) record(city_.repaired, issue, id, n);
     }
 
-    void addRoad(const RawRoad& raw) {
+    /// Clips a road's or railway's pieces to the box and projects them into `out`; drops are
+    /// counted under `prefix` + "_outside_bbox", "_degenerate" or "_incomplete_geometry".
+    template <typename Way>
+    void addLine(const RawLine<Way>& raw, const std::string& prefix, std::vector<Way>& out) {
         const OsmRef id{OsmType::Way, raw.attributes.osmId};
         if (std::none_of(raw.pieces.begin(), raw.pieces.end(), [](const GeoLine& l) { return l.size() >= 2; })) {
-            record(city_.dropped, raw.pieces.empty() ? "road_incomplete_geometry" : "road_degenerate", id);
+            record(city_.dropped, prefix + (raw.pieces.empty() ? "_incomplete_geometry" : "_degenerate"), id);
             return;
         }
         size_t kept = 0;
         for (const GeoLine& piece : raw.pieces)
             for (const GeoLine& clipped : clipPolyline(piece, box_)) {
-                Road road = raw.attributes;
-                for (const LonLat p : clipped) road.centerline.push_back(projection_.project(p));
+                Way way = raw.attributes;
+                for (const LonLat p : clipped) way.centerline.push_back(projection_.project(p));
                 const auto same = [](Vec2d a, Vec2d b) { return a.x == b.x && a.y == b.y; };
-                road.centerline.erase(std::unique(road.centerline.begin(), road.centerline.end(), same),
-                                      road.centerline.end());
-                if (road.centerline.size() < 2) continue;
-                city_.roads.push_back(std::move(road));
+                way.centerline.erase(std::unique(way.centerline.begin(), way.centerline.end(), same),
+                                     way.centerline.end());
+                if (way.centerline.size() < 2) continue;
+                out.push_back(std::move(way));
                 ++kept;
             }
         if (kept == 0) {
-            record(city_.dropped, "road_outside_bbox", id);
+            record(city_.dropped, prefix + "_outside_bbox", id);
             return;
         }
         for (const auto& [issue, n] : raw.tagIssues) record(city_.repaired, issue, id, n);
@@ -138,6 +147,18 @@ private:
     CityModel& city_;
 };
 
+/// The crossing nodes, then each node of a footway=crossing way that a carriageway shares and
+/// no crossing node (or earlier crossing way) already stands on.
+std::vector<RawCrossing> crossingsOf(const RawFeatures& raw) {
+    std::vector<RawCrossing> crossings = raw.crossings;
+    std::unordered_set<int64_t> taken;
+    for (const RawCrossing& c : crossings) taken.insert(c.attributes.osmId);
+    for (const RawCrossing& c : raw.crossingWayNodes)
+        if (raw.carriagewayNodes.contains(c.attributes.osmId) && taken.insert(c.attributes.osmId).second)
+            crossings.push_back(c);
+    return crossings;
+}
+
 } // namespace
 
 CityModel buildCityModel(RawFeatures&& raw, const GeoBox& box) {
@@ -148,7 +169,10 @@ CityModel buildCityModel(RawFeatures&& raw, const GeoBox& box) {
     Builder builder(box, city);
     for (RawBuilding& b : raw.buildings) builder.addBuilding(b);
     for (const RawArea& a : raw.areas) builder.addArea(a);
-    for (const RawRoad& r : raw.roads) builder.addRoad(r);
+    for (const RawRoad& r : raw.roads) builder.addLine(r, "road", city.roads);
+    for (const RawRailway& r : raw.railways) builder.addLine(r, "railway", city.railways);
+    for (const RawCrossing& c : crossingsOf(raw))
+        builder.addPoint(c.attributes, c.position, city.crossings, "crossing_outside_bbox");
     for (auto& [lamp, p] : raw.lamps) builder.addPoint(std::move(lamp), p, city.lamps, "lamp_outside_bbox");
     for (auto& [tree, p] : raw.trees) builder.addPoint(std::move(tree), p, city.trees, "tree_outside_bbox");
     replaceOutlinesByParts(city.buildings, builder.geos(), city.dropped);
