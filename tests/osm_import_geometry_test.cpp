@@ -21,11 +21,7 @@ using test::tag;
 using test::way;
 using test::writeOsm;
 
-const Building* findBuilding(const CityModel& city, int64_t osmId) {
-    const auto it = std::find_if(city.buildings.begin(), city.buildings.end(),
-                                 [osmId](const Building& b) { return b.osmId == osmId; });
-    return it == city.buildings.end() ? nullptr : &*it;
-}
+const Building* findBuilding(const CityModel& city, int64_t osmId) { return test::findById(city.buildings, osmId); }
 
 } // namespace
 

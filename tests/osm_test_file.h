@@ -3,10 +3,13 @@
 
 #include "process_scratch_dir.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace urbis::test {
 
@@ -33,5 +36,12 @@ inline std::string way(int id, std::initializer_list<int> nodes, const std::stri
 }
 
 inline std::string tag(const std::string& k, const std::string& v) { return "<tag k='" + k + "' v='" + v + "'/>"; }
+
+/// The first record of `items` with this OSM id, or nullptr.
+template <typename T>
+const T* findById(const std::vector<T>& items, int64_t osmId) {
+    const auto it = std::find_if(items.begin(), items.end(), [osmId](const T& item) { return item.osmId == osmId; });
+    return it == items.end() ? nullptr : &*it;
+}
 
 } // namespace urbis::test

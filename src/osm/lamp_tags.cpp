@@ -32,19 +32,21 @@ std::optional<T> find(const std::array<std::pair<std::string_view, T>, N>& table
     return std::nullopt;
 }
 
-constexpr std::array<std::pair<std::string_view, LampMount>, 12> kMounts = {{
+/// `lamp_mount` and `support` values alike (the wiki's lists overlap).
+constexpr std::array<std::pair<std::string_view, LampMount>, 9> kMounts = {{
     {"straight_mast", LampMount::Pole}, {"cast_steel", LampMount::Pole}, {"pole", LampMount::Pole},
     {"bent_mast", LampMount::BentMast}, {"wall", LampMount::Wall}, {"wall_mounted", LampMount::Wall},
-    {"suspended", LampMount::Suspended}, {"wire", LampMount::Suspended}, {"ground", LampMount::Ground},
-    {"wall_mount", LampMount::Wall}, {"mast", LampMount::Pole}, {"pedestal", LampMount::Pole}}};
+    {"suspended", LampMount::Suspended}, {"wire", LampMount::Suspended}, {"ground", LampMount::Ground}}};
 
-constexpr std::array<std::pair<std::string_view, LampHead>, 14> kHeads = {{
-    {"lantern", LampHead::Lantern}, {"gaslight", LampHead::Lantern}, {"lamp", LampHead::Lantern},
+/// `lamp_type` and `light:shape` values that name a head's shape.
+constexpr std::array<std::pair<std::string_view, LampHead>, 13> kHeads = {{
+    {"lantern", LampHead::Lantern}, {"gaslight", LampHead::Lantern},
     {"globe", LampHead::Globe}, {"sphere", LampHead::Globe}, {"ball", LampHead::Globe},
     {"cone", LampHead::Cone}, {"conical", LampHead::Cone}, {"pendant", LampHead::Cone},
     {"flat", LampHead::Flat}, {"floodlight", LampHead::Flat}, {"panel", LampHead::Flat},
     {"cobra", LampHead::Cobra}, {"cobra_head", LampHead::Cobra}}};
 
+/// Colour temperature (K) by `light:method` (or a `lamp_type` naming one).
 constexpr std::array<std::pair<std::string_view, float>, 16> kMethodKelvin = {{
     {"high_pressure_sodium", 2000.0f}, {"sodium", 2000.0f}, {"sodium_vapour", 2000.0f},
     {"sodium_vapor", 2000.0f}, {"low_pressure_sodium", 1800.0f}, {"mercury", 4000.0f},

@@ -3,7 +3,9 @@
 #include "osm/level_tags.h"
 #include "osm/tag_parsing.h"
 
+#include <algorithm>
 #include <array>
+#include <utility>
 #include <string_view>
 
 namespace urbis {
@@ -37,30 +39,30 @@ ClassDefaults defaultsOf(HighwayClass highway) {
 
 bool is(const char* value, std::string_view name) { return value && trim(value) == name; }
 
-/// A lane count in [minimum, kMaxLanes] from `key`; nullopt (counted) when unusable.
-std::optional<int> lanesTag(const TagLookup& tag, const char* key, int minimum,
-                            std::map<std::string, uint64_t>& issues) {
+/// A lane count in [minimum, kMaxLanes] from `key`; -1 when untagged or unusable (then counted).
+int lanesTag(const TagLookup& tag, const char* key, int minimum, std::map<std::string, uint64_t>& issues) {
     const char* value = tag(key);
-    if (!value) return std::nullopt;
+    if (!value) return -1;
     const std::optional<int> n = parseInteger(value);
-    if (n && *n >= minimum && *n <= kMaxLanes) return n;
+    if (n && *n >= minimum && *n <= kMaxLanes) return *n;
     ++issues["road_bad_lanes_tag"];
-    return std::nullopt;
+    return -1;
 }
 
 void readLanesAndWidth(const TagLookup& tag, bool reversed, Road& r, std::map<std::string, uint64_t>& issues) {
     const ClassDefaults defaults = defaultsOf(r.highway);
-    const std::optional<int> lanes = lanesTag(tag, "lanes", 1, issues);
-    std::optional<int> forward = lanesTag(tag, "lanes:forward", 0, issues);
-    std::optional<int> backward = lanesTag(tag, "lanes:backward", 0, issues);
+    const int lanes = lanesTag(tag, "lanes", 1, issues);
+    int forward = lanesTag(tag, "lanes:forward", 0, issues);
+    int backward = lanesTag(tag, "lanes:backward", 0, issues);
     if (reversed) std::swap(forward, backward); // the centerline is flipped to the way's one direction
-    r.lanesForward = forward.value_or(0);
-    r.lanesBackward = backward.value_or(0);
+    r.lanesForward = std::max(forward, 0);
+    r.lanesBackward = std::max(backward, 0);
+    const bool directional = forward >= 0 || backward >= 0;
     const int untaggedSide = r.oneway ? 0 : 1;
-    if (lanes) r.lanes = *lanes;
-    else if (forward || backward) r.lanes = std::max(1, forward.value_or(untaggedSide) + backward.value_or(untaggedSide));
+    if (lanes > 0) r.lanes = lanes;
+    else if (directional) r.lanes = std::max(1, (forward >= 0 ? forward : untaggedSide) + (backward >= 0 ? backward : untaggedSide));
     else r.lanes = r.oneway ? 1 : defaults.lanes;
-    r.width = (lanes || forward || backward) ? float(r.lanes) * defaults.laneWidth : defaults.width;
+    r.width = (lanes > 0 || directional) ? float(r.lanes) * defaults.laneWidth : defaults.width;
     if (const char* value = tag("width")) {
         const std::optional<double> width = parseLength(value);
         if (width && *width > 0.0 && *width < kMaxWidth) r.width = float(*width);
