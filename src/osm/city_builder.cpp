@@ -5,6 +5,7 @@
 #include "osm/geos_polygon.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <unordered_set>
 
@@ -16,14 +17,26 @@ constexpr double kMinArea = 1.0; // m^2
 
 class Builder {
 public:
-    Builder(const GeoBox& box, CityModel& city) : box_(box), projection_(box.centre()), city_(city) {}
+    Builder(const GeoBox& box, CityModel& city) : box_(box), projection_(box.centre()), city_(city) {
+        // The local rectangle around the box's projected corners (the box's edges bow a little
+        // on the tangent plane; the rectangle holds them all).
+        boxMin_ = {HUGE_VAL, HUGE_VAL};
+        boxMax_ = {-HUGE_VAL, -HUGE_VAL};
+        for (const LonLat corner : {LonLat{box.minLon, box.minLat}, LonLat{box.maxLon, box.minLat},
+                                    LonLat{box.minLon, box.maxLat}, LonLat{box.maxLon, box.maxLat}}) {
+            const Vec2d p = projection_.project(corner);
+            boxMin_ = {std::min(boxMin_.x, p.x), std::min(boxMin_.y, p.y)};
+            boxMax_ = {std::max(boxMax_.x, p.x), std::max(boxMax_.y, p.y)};
+        }
+    }
 
     /// Projects, checks and repairs one polygon; nullptr when usable, else the drop reason.
-    /// `repaired` tells whether GEOS had to make it valid.
-    const char* makePolygon(const GeoPolygon& g, Polygon& out, bool& repaired) {
+    /// `repaired` tells whether GEOS had to make it valid. With `byCentroid`, one whose centroid
+    /// lies outside the box is dropped.
+    const char* makePolygon(const GeoPolygon& g, Polygon& out, bool& repaired, bool byCentroid = true) {
         out.outer = ring(g.outer);
         if (out.outer.size() < 3) return "degenerate_footprint";
-        if (!box_.contains(centroidInDegrees(g.outer))) return "outside_bbox";
+        if (byCentroid && !box_.contains(centroidInDegrees(g.outer))) return "outside_bbox";
         for (const GeoLine& h : g.holes)
             if (Ring hole = ring(h); hole.size() >= 3) out.holes.push_back(std::move(hole));
         orient(out);
@@ -69,14 +82,27 @@ public:
         }
         bool kept = false;
         for (const GeoPolygon& g : raw.polygons) {
-            Area a = raw.attributes;
+            Polygon whole;
             bool repaired = false;
-            if (const char* reason = makePolygon(g, a.polygon, repaired)) {
+            if (const char* reason = makePolygon(g, whole, repaired, false)) {
                 record(city_.dropped, dropKey(PolygonRole::Area, reason), id);
                 continue;
             }
+            // Ground cover is clipped to the box (a landuse can span the whole town, its
+            // centroid far outside); a building is kept whole, by its centroid.
+            size_t pieces = 0;
+            for (Polygon& part : geos_.clipToRectangle(whole, boxMin_, boxMax_)) {
+                if (area(part) < kMinArea) continue;
+                Area a = raw.attributes;
+                a.polygon = std::move(part);
+                city_.areas.push_back(std::move(a));
+                ++pieces;
+            }
+            if (pieces == 0) {
+                record(city_.dropped, dropKey(PolygonRole::Area, "outside_bbox"), id);
+                continue;
+            }
             if (repaired) record(city_.repaired, dropKey(PolygonRole::Area, "made_valid"), id);
-            city_.areas.push_back(std::move(a));
             kept = true;
         }
         if (kept)
@@ -143,6 +169,7 @@ private:
 
     GeoBox box_;
     GeoProjection projection_;
+    Vec2d boxMin_, boxMax_; ///< the box in local metres, for clipping areas
     GeosContext geos_;
     CityModel& city_;
 };

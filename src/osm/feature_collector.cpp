@@ -108,9 +108,9 @@ void FeatureCollector::way(const osmium::Way& way) {
     const osmium::TagList& tags = way.tags();
     if (const std::optional<RailKind> kind = railKindOf(tags.get_value_by_key("railway"))) addRailway(way, *kind);
     PolygonRole role = roleOf(tags);
-    // An unclosed highway tagged area=yes is a mistagged road: kept as one. (is_closed() reads
-    // the last node, which a way without nodes does not have.)
-    if (role == PolygonRole::Area && tags.has_key("highway") && !way.nodes().empty() && !way.is_closed())
+    // A highway tagged area=yes that is no ring (unclosed, or fewer than 4 nodes) is a
+    // mistagged road: kept as one. (is_closed() reads the last node, so the size comes first.)
+    if (role == PolygonRole::Area && tags.has_key("highway") && (way.nodes().size() < 4 || !way.is_closed()))
         role = PolygonRole::None;
     if (role != PolygonRole::None) {
         std::vector<GeoPolygon> polygons(1);
