@@ -4,53 +4,24 @@
 #include "model/polygon_ops.h"
 #include "osm/osm_import.h"
 
-#include "process_scratch_dir.h"
+#include "osm_test_file.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <string>
-
-#include <unistd.h>
 
 using namespace urbis;
 
 namespace {
 
-using test::processScratchDir;
+using test::node;
+using test::tag;
+using test::way;
+using test::writeOsm;
 
-/// Writes `body` (nodes, ways, relations) into an .osm file under the test temp dir,
-/// with a <bounds> box of about 220 x 220 m at lon 10.0, lat 50.0.
-std::string writeOsm(const std::string& name, const std::string& body) {
-    const std::filesystem::path path = processScratchDir() / name;
-    std::ofstream(path) << "<?xml version='1.0' encoding='UTF-8'?>\n<osm version='0.6' generator='test'>\n"
-                        << "<bounds minlat='50.0' minlon='10.0' maxlat='50.002' maxlon='10.003'/>\n"
-                        << body << "</osm>\n";
-    return path.string();
-}
-
-/// A node at (lon, lat) given in millionths of a degree above (10.0, 50.0).
-std::string node(int id, int dLon, int dLat, const std::string& tags = "") {
-    return "<node id='" + std::to_string(id) + "' version='1' lat='" + std::to_string(50.0 + dLat * 1e-6) +
-           "' lon='" + std::to_string(10.0 + dLon * 1e-6) + "'>" + tags + "</node>\n";
-}
-
-std::string way(int id, std::initializer_list<int> nodes, const std::string& tags) {
-    std::string s = "<way id='" + std::to_string(id) + "' version='1'>";
-    for (int n : nodes) s += "<nd ref='" + std::to_string(n) + "'/>";
-    return s + tags + "</way>\n";
-}
-
-std::string tag(const std::string& k, const std::string& v) { return "<tag k='" + k + "' v='" + v + "'/>"; }
-
-const Building* findBuilding(const CityModel& city, int64_t osmId) {
-    const auto it = std::find_if(city.buildings.begin(), city.buildings.end(),
-                                 [osmId](const Building& b) { return b.osmId == osmId; });
-    return it == city.buildings.end() ? nullptr : &*it;
-}
+const Building* findBuilding(const CityModel& city, int64_t osmId) { return test::findById(city.buildings, osmId); }
 
 } // namespace
 

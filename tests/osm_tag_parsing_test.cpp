@@ -1,6 +1,7 @@
 // Table-driven tag parsing, apart from any geometry or file.
 #include "osm/building_tags.h"
 #include "osm/colour_table.h"
+#include "osm/lamp_tags.h"
 #include "osm/nature_tags.h"
 #include "osm/street_tags.h"
 #include "osm/tag_parsing.h"
@@ -170,7 +171,7 @@ TEST(StreetTags, RoadWidthLanesAndFlags) {
 
     const std::map<std::string, std::string> lanes{{"highway", "residential"}, {"lanes", "3"}, {"oneway", "-1"}};
     const Road b = roadFromTags(tagsOf(lanes), 2, reversed, issues);
-    EXPECT_FLOAT_EQ(b.width, 3 * 3.25f);
+    EXPECT_FLOAT_EQ(b.width, 3 * 3.0f); // a residential lane is 3 m
     EXPECT_TRUE(b.oneway);
     EXPECT_TRUE(reversed);
 

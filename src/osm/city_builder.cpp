@@ -5,6 +5,9 @@
 #include "osm/geos_polygon.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_set>
 
 namespace urbis {
 
@@ -14,14 +17,26 @@ constexpr double kMinArea = 1.0; // m^2
 
 class Builder {
 public:
-    Builder(const GeoBox& box, CityModel& city) : box_(box), projection_(box.centre()), city_(city) {}
+    Builder(const GeoBox& box, CityModel& city) : box_(box), projection_(box.centre()), city_(city) {
+        // The local rectangle around the box's projected corners (the box's edges bow a little
+        // on the tangent plane; the rectangle holds them all).
+        boxMin_ = {HUGE_VAL, HUGE_VAL};
+        boxMax_ = {-HUGE_VAL, -HUGE_VAL};
+        for (const LonLat corner : {LonLat{box.minLon, box.minLat}, LonLat{box.maxLon, box.minLat},
+                                    LonLat{box.minLon, box.maxLat}, LonLat{box.maxLon, box.maxLat}}) {
+            const Vec2d p = projection_.project(corner);
+            boxMin_ = {std::min(boxMin_.x, p.x), std::min(boxMin_.y, p.y)};
+            boxMax_ = {std::max(boxMax_.x, p.x), std::max(boxMax_.y, p.y)};
+        }
+    }
 
     /// Projects, checks and repairs one polygon; nullptr when usable, else the drop reason.
-    /// `repaired` tells whether GEOS had to make it valid.
-    const char* makePolygon(const GeoPolygon& g, Polygon& out, bool& repaired) {
+    /// `repaired` tells whether GEOS had to make it valid. With `byCentroid`, one whose centroid
+    /// lies outside the box is dropped.
+    const char* makePolygon(const GeoPolygon& g, Polygon& out, bool& repaired, bool byCentroid = true) {
         out.outer = ring(g.outer);
         if (out.outer.size() < 3) return "degenerate_footprint";
-        if (!box_.contains(centroidInDegrees(g.outer))) return "outside_bbox";
+        if (byCentroid && !box_.contains(centroidInDegrees(g.outer))) return "outside_bbox";
         for (const GeoLine& h : g.holes)
             if (Ring hole = ring(h); hole.size() >= 3) out.holes.push_back(std::move(hole));
         orient(out);
@@ -65,38 +80,58 @@ public:
             record(city_.dropped, dropKey(PolygonRole::Area, raw.problem), id);
             return;
         }
+        bool kept = false;
         for (const GeoPolygon& g : raw.polygons) {
-            Area a = raw.attributes;
+            Polygon whole;
             bool repaired = false;
-            if (const char* reason = makePolygon(g, a.polygon, repaired)) {
+            if (const char* reason = makePolygon(g, whole, repaired, false)) {
                 record(city_.dropped, dropKey(PolygonRole::Area, reason), id);
                 continue;
             }
+            // Ground cover is clipped to the box (a landuse can span the whole town, its
+            // centroid far outside); a building is kept whole, by its centroid.
+            size_t pieces = 0;
+            for (Polygon& part : geos_.clipToRectangle(whole, boxMin_, boxMax_)) {
+                if (area(part) < kMinArea) continue;
+                Area a = raw.attributes;
+                a.polygon = std::move(part);
+                city_.areas.push_back(std::move(a));
+                ++pieces;
+            }
+            if (pieces == 0) {
+                record(city_.dropped, dropKey(PolygonRole::Area, "outside_bbox"), id);
+                continue;
+            }
             if (repaired) record(city_.repaired, dropKey(PolygonRole::Area, "made_valid"), id);
-            city_.areas.push_back(std::move(a));
+            kept = true;
         }
+        if (kept)
+            for (const auto& [issue, n] : raw.tagIssues) record(city_.repaired, issue, id, n);
     }
 
-    void addRoad(const RawRoad& raw) {
+    /// Clips a road's or railway's pieces to the box and projects them into `out`; drops are
+    /// counted under `prefix` + "_outside_bbox", "_degenerate" or "_incomplete_geometry".
+    template <typename Way>
+    void addLine(const RawLine<Way>& raw, const std::string& prefix, std::vector<Way>& out) {
         const OsmRef id{OsmType::Way, raw.attributes.osmId};
         if (std::none_of(raw.pieces.begin(), raw.pieces.end(), [](const GeoLine& l) { return l.size() >= 2; })) {
-            record(city_.dropped, raw.pieces.empty() ? "road_incomplete_geometry" : "road_degenerate", id);
+            record(city_.dropped, prefix + (raw.pieces.empty() ? "_incomplete_geometry" : "_degenerate"), id);
             return;
         }
         size_t kept = 0;
         for (const GeoLine& piece : raw.pieces)
             for (const GeoLine& clipped : clipPolyline(piece, box_)) {
-                Road road = raw.attributes;
-                for (const LonLat p : clipped) road.centerline.push_back(projection_.project(p));
+                Way way = raw.attributes;
+                for (const LonLat p : clipped) way.centerline.push_back(projection_.project(p));
                 const auto same = [](Vec2d a, Vec2d b) { return a.x == b.x && a.y == b.y; };
-                road.centerline.erase(std::unique(road.centerline.begin(), road.centerline.end(), same),
-                                      road.centerline.end());
-                if (road.centerline.size() < 2) continue;
-                city_.roads.push_back(std::move(road));
+                way.centerline.erase(std::unique(way.centerline.begin(), way.centerline.end(), same),
+                                     way.centerline.end());
+                if (way.centerline.size() < 2) continue;
+                out.push_back(std::move(way));
                 ++kept;
             }
         if (kept == 0) {
-            record(city_.dropped, "road_outside_bbox", id);
+            record(city_.dropped, prefix + "_outside_bbox", id);
             return;
         }
         for (const auto& [issue, n] : raw.tagIssues) record(city_.repaired, issue, id, n);
@@ -134,9 +169,22 @@ private:
 
     GeoBox box_;
     GeoProjection projection_;
+    Vec2d boxMin_, boxMax_; ///< the box in local metres, for clipping areas
     GeosContext geos_;
     CityModel& city_;
 };
+
+/// The crossing nodes, then each node of a footway=crossing way that a carriageway shares and
+/// no crossing node (or earlier crossing way) already stands on.
+std::vector<RawCrossing> crossingsOf(const RawFeatures& raw) {
+    std::vector<RawCrossing> crossings = raw.crossings;
+    std::unordered_set<int64_t> taken;
+    for (const RawCrossing& c : crossings) taken.insert(c.attributes.osmId);
+    for (const RawCrossing& c : raw.crossingWayNodes)
+        if (raw.carriagewayNodes.contains(c.attributes.osmId) && taken.insert(c.attributes.osmId).second)
+            crossings.push_back(c);
+    return crossings;
+}
 
 } // namespace
 
@@ -148,7 +196,10 @@ CityModel buildCityModel(RawFeatures&& raw, const GeoBox& box) {
     Builder builder(box, city);
     for (RawBuilding& b : raw.buildings) builder.addBuilding(b);
     for (const RawArea& a : raw.areas) builder.addArea(a);
-    for (const RawRoad& r : raw.roads) builder.addRoad(r);
+    for (const RawRoad& r : raw.roads) builder.addLine(r, "road", city.roads);
+    for (const RawRailway& r : raw.railways) builder.addLine(r, "railway", city.railways);
+    for (const RawCrossing& c : crossingsOf(raw))
+        builder.addPoint(c.attributes, c.position, city.crossings, "crossing_outside_bbox");
     for (auto& [lamp, p] : raw.lamps) builder.addPoint(std::move(lamp), p, city.lamps, "lamp_outside_bbox");
     for (auto& [tree, p] : raw.trees) builder.addPoint(std::move(tree), p, city.trees, "tree_outside_bbox");
     replaceOutlinesByParts(city.buildings, builder.geos(), city.dropped);

@@ -21,7 +21,10 @@ bool clipSegment(LonLat a, LonLat b, const GeoBox& box, double& t0, double& t1) 
     return t0 <= t1;
 }
 
+/// The point at t along a -> b; exactly b at t = 1 (a + (b - a) may round elsewhere), so that a
+/// vertex inside the box keeps its bits and stays equal to the node at the same place.
 LonLat lerp(LonLat a, LonLat b, double t) {
+    if (t == 1.0) return b;
     return {a.lon + t * (b.lon - a.lon), a.lat + t * (b.lat - a.lat)};
 }
 

@@ -1,8 +1,12 @@
 #include "osm/feature_collector.h"
 
 #include "osm/building_tags.h"
+#include "osm/lamp_tags.h"
+#include "osm/level_tags.h"
 #include "osm/nature_tags.h"
+#include "osm/railway_tags.h"
 #include "osm/street_tags.h"
+#include "osm/tag_parsing.h"
 #include "osm/underground_tags.h"
 
 #include <algorithm>
@@ -43,11 +47,35 @@ bool locationsOf(const NodeRefs& nodes, GeoLine& out) {
     return true;
 }
 
+/// The pieces of a way's line between missing nodes; true when a node was missing.
+bool piecesOf(const osmium::WayNodeList& nodes, std::vector<GeoLine>& pieces) {
+    GeoLine piece;
+    bool missing = false;
+    for (const osmium::NodeRef& node : nodes) {
+        if (node.location().valid()) {
+            piece.push_back(lonLatOf(node.location()));
+            continue;
+        }
+        missing = true;
+        if (!piece.empty()) pieces.push_back(std::move(piece));
+        piece.clear();
+    }
+    if (!piece.empty()) pieces.push_back(std::move(piece));
+    return missing;
+}
+
+/// A node where pedestrians cross: highway=crossing, railway=crossing or footway=crossing.
+bool isCrossingNode(const osmium::TagList& tags) {
+    return tags.has_tag("highway", "crossing") || tags.has_tag("railway", "crossing") ||
+           tags.has_tag("footway", "crossing");
+}
+
 } // namespace
 
 osmium::TagsFilter polygonTagsFilter() {
     osmium::TagsFilter filter{false};
-    for (const char* key : {"building", "building:part", "leisure", "landuse", "natural", "waterway"})
+    for (const char* key : {"building", "building:part", "leisure", "landuse", "natural", "waterway", "water",
+                            "amenity", "area:highway", "place", "highway"})
         filter.add_rule(true, osmium::TagMatcher{key});
     return filter;
 }
@@ -71,15 +99,22 @@ void FeatureCollector::node(const osmium::Node& node) {
     const TagLookup tags = lookupIn(node.tags());
     if (node.tags().has_tag("highway", "street_lamp")) out_.lamps.emplace_back(lampFromTags(tags, node.id()), p);
     if (node.tags().has_tag("natural", "tree")) out_.trees.emplace_back(treeFromTags(tags, node.id()), p);
+    if (isCrossingNode(node.tags()))
+        if (const std::optional<CrossingKind> kind = crossingKindFromTags(tags))
+            out_.crossings.push_back({{node.id(), {}, *kind}, p});
 }
 
 void FeatureCollector::way(const osmium::Way& way) {
     const osmium::TagList& tags = way.tags();
-    const PolygonRole role = roleOf(tags);
+    if (const std::optional<RailKind> kind = railKindOf(tags.get_value_by_key("railway"))) addRailway(way, *kind);
+    PolygonRole role = roleOf(tags);
+    // A highway tagged area=yes that is no ring (unclosed, or fewer than 4 nodes) is a
+    // mistagged road: kept as one. (is_closed() reads the last node, so the size comes first.)
+    if (role == PolygonRole::Area && tags.has_key("highway") && (way.nodes().size() < 4 || !way.is_closed()))
+        role = PolygonRole::None;
     if (role != PolygonRole::None) {
         std::vector<GeoPolygon> polygons(1);
         const char* problem = nullptr;
-        // is_closed() reads the last node, which a way without nodes does not have.
         if (way.nodes().empty()) problem = "degenerate_footprint";
         else if (!way.is_closed()) problem = "unclosed_way";
         else if (!locationsOf(way.nodes(), polygons[0].outer)) problem = "incomplete_geometry";
@@ -87,26 +122,33 @@ void FeatureCollector::way(const osmium::Way& way) {
         addPolygonFeature(role, tags, way.id(), std::move(polygons), problem);
         return;
     }
-    if (!tags.has_key("highway")) return;
+    if (tags.has_key("highway")) addRoad(way);
+}
+
+void FeatureCollector::addRoad(const osmium::Way& way) {
+    const TagLookup tags = lookupIn(way.tags());
     RawRoad road;
     bool reversed = false;
-    road.attributes = roadFromTags(lookupIn(tags), way.id(), reversed, road.tagIssues);
-    GeoLine piece;
-    bool missing = false;
-    for (const osmium::NodeRef& node : way.nodes()) {
-        if (node.location().valid()) {
-            piece.push_back(lonLatOf(node.location()));
-            continue;
-        }
-        missing = true;
-        if (!piece.empty()) road.pieces.push_back(std::move(piece));
-        piece.clear();
-    }
-    if (!piece.empty()) road.pieces.push_back(std::move(piece));
-    if (missing) ++road.tagIssues["road_missing_nodes"];
+    road.attributes = roadFromTags(tags, way.id(), reversed, road.tagIssues);
+    if (piecesOf(way.nodes(), road.pieces)) ++road.tagIssues["road_missing_nodes"];
     if (reversed)
         for (GeoLine& p : road.pieces) std::reverse(p.begin(), p.end());
+    if (road.attributes.footway == FootwayKind::Crossing) {
+        if (const std::optional<CrossingKind> kind = crossingKindFromTags(tags))
+            for (const osmium::NodeRef& node : way.nodes())
+                if (node.location().valid())
+                    out_.crossingWayNodes.push_back({{node.ref(), {}, *kind}, lonLatOf(node.location())});
+    } else if (isCarriageway(road.attributes.highway)) {
+        for (const osmium::NodeRef& node : way.nodes()) out_.carriagewayNodes.insert(node.ref());
+    }
     out_.roads.push_back(std::move(road));
+}
+
+void FeatureCollector::addRailway(const osmium::Way& way, RailKind kind) {
+    RawRailway railway;
+    railway.attributes = railwayFromTags(lookupIn(way.tags()), kind, way.id(), railway.tagIssues);
+    if (piecesOf(way.nodes(), railway.pieces)) ++railway.tagIssues["railway_missing_nodes"];
+    out_.railways.push_back(std::move(railway));
 }
 
 void FeatureCollector::area(const osmium::Area& area) {
@@ -134,10 +176,11 @@ void FeatureCollector::addPolygonFeature(PolygonRole role, const osmium::TagList
                                          std::vector<GeoPolygon> polygons, const char* problem) {
     const TagLookup lookup = lookupIn(tags);
     if (role == PolygonRole::Area) {
-        Area attributes;
-        attributes.osmId = osmId;
-        attributes.kind = *areaKindFromTags(lookup);
-        RawArea a{attributes, std::move(polygons), problem};
+        RawArea a{{}, std::move(polygons), problem, {}};
+        a.attributes.osmId = osmId;
+        a.attributes.kind = *areaKindFromTags(lookup);
+        if (const char* surface = lookup("surface")) a.attributes.surface = parseRoadSurface(surface);
+        a.attributes.layer = levelFromTags(lookup, "area_bad_layer_tag", a.tagIssues).layer;
         out_.areas.push_back(std::move(a));
         return;
     }

@@ -39,9 +39,9 @@ class FeatureCollector : public osmium::handler::Handler {
 public:
     /// Collects into `out`, reading tags with `options` (metres per level, building seeds).
     FeatureCollector(const ImportOptions& options, RawFeatures& out);
-    /// Street lamps and trees; extends the data extent.
+    /// Street lamps, trees and crossings; extends the data extent.
     void node(const osmium::Node& node);
-    /// Highways, and closed ways that are buildings, parts or areas.
+    /// Highways, railways, and closed ways that are buildings, parts or areas.
     void way(const osmium::Way& way);
     /// Multipolygon relations assembled by osmium::area::MultipolygonManager (configured not
     /// to assemble closed ways: way() reads those, so that GEOS can repair them).
@@ -50,6 +50,10 @@ public:
     const std::unordered_set<osmium::object_id_type>& assembledRelations() const { return assembled_; }
 
 private:
+    /// A highway way; a footway=crossing one also gives its nodes as crossing candidates, a
+    /// carriageway its node ids.
+    void addRoad(const osmium::Way& way);
+    void addRailway(const osmium::Way& way, RailKind kind);
     void addPolygonFeature(PolygonRole role, const osmium::TagList& tags, int64_t osmId,
                            std::vector<GeoPolygon> polygons, const char* problem);
 

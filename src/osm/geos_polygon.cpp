@@ -82,6 +82,21 @@ Validity GeosContext::makeValid(Polygon& polygon) const {
     return Validity::Repaired;
 }
 
+std::vector<Polygon> GeosContext::clipToRectangle(const Polygon& polygon, Vec2d min, Vec2d max) const {
+    const Handle ctx = handle_;
+    const GeometryPtr geometry = toGeos(ctx, polygon);
+    const GeometryPtr clipped(GEOSClipByRect_r(ctx, geometry.get(), min.x, min.y, max.x, max.y), GeometryDeleter{ctx});
+    std::vector<Polygon> parts;
+    if (!clipped) return parts;
+    for (int i = 0, n = GEOSGetNumGeometries_r(ctx, clipped.get()); i < n; ++i) {
+        const GEOSGeometry* part = GEOSGetGeometryN_r(ctx, clipped.get(), i);
+        if (GEOSGeomTypeId_r(ctx, part) != GEOS_POLYGON || GEOSisEmpty_r(ctx, part) == 1) continue;
+        Polygon p = fromGeos(ctx, part);
+        if (p.outer.size() >= 3) parts.push_back(std::move(p));
+    }
+    return parts;
+}
+
 double GeosContext::overlapArea(const Polygon& a, const Polygon& b) const {
     const Handle ctx = handle_;
     const GeometryPtr ga = toGeos(ctx, a), gb = toGeos(ctx, b);

@@ -3,6 +3,8 @@
 
 #include "model/city_model.h"
 
+#include <vector>
+
 struct GEOSContextHandle_HS; // geos_c.h's context type, kept out of this header
 
 namespace urbis {
@@ -23,6 +25,11 @@ public:
     /// it, oriented and without closing points (Repaired), or left as is when it makes none
     /// (Invalid).
     Validity makeValid(Polygon& polygon) const;
+
+    /// The polygons of the part of a valid `polygon` inside the rectangle [min, max] (local
+    /// metres), GEOSClipByRect_r: none when it lies outside, several when the border cuts it
+    /// apart; oriented, without closing points.
+    std::vector<Polygon> clipToRectangle(const Polygon& polygon, Vec2d min, Vec2d max) const;
 
     /// Area in m^2 common to two valid polygons.
     double overlapArea(const Polygon& a, const Polygon& b) const;

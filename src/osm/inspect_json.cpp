@@ -19,6 +19,8 @@ std::array<double, 4> extentOf(const CityModel& city) {
     };
     for (const Building& b : city.buildings) std::for_each(b.footprint.outer.begin(), b.footprint.outer.end(), add);
     for (const Road& r : city.roads) std::for_each(r.centerline.begin(), r.centerline.end(), add);
+    for (const Railway& r : city.railways) std::for_each(r.centerline.begin(), r.centerline.end(), add);
+    for (const Crossing& c : city.crossings) add(c.position);
     for (const Area& a : city.areas) std::for_each(a.polygon.outer.begin(), a.polygon.outer.end(), add);
     for (const Lamp& l : city.lamps) add(l.position);
     for (const Tree& t : city.trees) add(t.position);
@@ -42,6 +44,12 @@ LonLatBox lonLatOf(const std::array<double, 4>& e, const GeoOrigin& origin) {
     }
     return box;
 }
+
+/// Inspect's name of each area kind, in AreaKind's order.
+constexpr std::array<const char*, 15> kAreaKindNames = {
+    "park", "grass", "forest", "water", "residential", "commercial", "industrial", "pitch", "playground",
+    "sand", "scrub", "parking", "pedestrian", "cemetery", "farmland"};
+static_assert(kAreaKindNames.size() == size_t(AreaKind::Farmland) + 1, "a name for every AreaKind");
 
 /// {reason: count} of `log`, and with `ids` {reason: ["w123", ...]} into `idsOut`.
 nlohmann::json countsOf(const ReasonLog& log, bool ids, nlohmann::json& idsOut) {
@@ -78,6 +86,11 @@ nlohmann::json inspectJson(const CityModel& city, bool ids) {
     j["grass"] = countAreas(AreaKind::Grass);
     j["forests"] = countAreas(AreaKind::Forest);
     j["water"] = countAreas(AreaKind::Water);
+    j["crossings"] = city.crossings.size();
+    j["railways"] = city.railways.size();
+    nlohmann::json areas = nlohmann::json::object();
+    for (size_t k = 0; k < kAreaKindNames.size(); ++k) areas[kAreaKindNames[k]] = countAreas(AreaKind(k));
+    j["areas"] = areas;
     j["heights"] = {{"from_height_tag", countHeights(HeightSource::HeightTag)},
                     {"from_levels", countHeights(HeightSource::Levels)},
                     {"from_nearby_median", countHeights(HeightSource::NearbyMedian)},

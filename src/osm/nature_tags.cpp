@@ -9,16 +9,48 @@ namespace urbis {
 
 namespace {
 
+/// `key=value` names `kind`; an empty value matches any value of the key.
 struct AreaRule {
     const char* key;
     std::string_view value;
     AreaKind kind;
 };
-constexpr std::array<AreaRule, 8> kAreaRules = {{
-    {"leisure", "park", AreaKind::Park},    {"leisure", "garden", AreaKind::Park},
-    {"landuse", "grass", AreaKind::Grass},  {"landuse", "meadow", AreaKind::Grass},
-    {"landuse", "forest", AreaKind::Forest}, {"natural", "wood", AreaKind::Forest},
-    {"natural", "water", AreaKind::Water},  {"waterway", "riverbank", AreaKind::Water}}};
+/// In priority order (see nature_tags.h).
+constexpr std::array<AreaRule, 34> kAreaRules = {{
+    {"natural", "water", AreaKind::Water},         {"natural", "wetland", AreaKind::Water},
+    {"waterway", "riverbank", AreaKind::Water},    {"water", "", AreaKind::Water},
+    {"landuse", "basin", AreaKind::Water},         {"landuse", "reservoir", AreaKind::Water},
+    {"area:highway", "", AreaKind::Pedestrian},    {"place", "square", AreaKind::Pedestrian},
+    {"highway", "", AreaKind::Pedestrian},         {"amenity", "parking", AreaKind::Parking},
+    {"leisure", "pitch", AreaKind::Pitch},         {"leisure", "playground", AreaKind::Playground},
+    {"leisure", "park", AreaKind::Park},           {"leisure", "garden", AreaKind::Park},
+    {"natural", "sand", AreaKind::Sand},           {"natural", "beach", AreaKind::Sand},
+    {"natural", "scrub", AreaKind::Scrub},         {"natural", "heath", AreaKind::Scrub},
+    {"natural", "wood", AreaKind::Forest},         {"natural", "grassland", AreaKind::Grass},
+    {"landuse", "forest", AreaKind::Forest},       {"landuse", "cemetery", AreaKind::Cemetery},
+    {"landuse", "grass", AreaKind::Grass},         {"landuse", "meadow", AreaKind::Grass},
+    {"landuse", "village_green", AreaKind::Grass}, {"landuse", "farmland", AreaKind::Farmland},
+    {"landuse", "farmyard", AreaKind::Farmland},   {"landuse", "residential", AreaKind::Residential},
+    {"landuse", "commercial", AreaKind::Commercial}, {"landuse", "retail", AreaKind::Commercial},
+    {"landuse", "industrial", AreaKind::Industrial}, {"landuse", "railway", AreaKind::Industrial},
+    {"amenity", "grave_yard", AreaKind::Cemetery}, {"leisure", "dog_park", AreaKind::Park}}};
+
+bool is(const char* value, std::string_view name) { return value && trim(value) == name; }
+
+/// A highway is an area only with area=yes, or as a multipolygon; otherwise it is a road.
+bool isHighwayArea(const TagLookup& tag) { return is(tag("area"), "yes") || is(tag("type"), "multipolygon"); }
+
+/// Whether the rule's tag, present on the object, may stand for an area: a highway only as an
+/// area (area=yes, or a multipolygon), a car park only at ground level.
+bool applies(const AreaRule& rule, const TagLookup& tag) {
+    const std::string_view key = rule.key;
+    if (key == "highway") return isHighwayArea(tag);
+    if (key == "amenity" && rule.kind == AreaKind::Parking) {
+        const char* parking = tag("parking");
+        return !is(parking, "underground") && !is(parking, "multi-storey");
+    }
+    return true;
+}
 
 } // namespace
 
@@ -35,8 +67,11 @@ Tree treeFromTags(const TagLookup& tag, int64_t osmId) {
 }
 
 std::optional<AreaKind> areaKindFromTags(const TagLookup& tag) {
-    for (const AreaRule& rule : kAreaRules)
-        if (const char* value = tag(rule.key); value && rule.value == value) return rule.kind;
+    if (tag("highway") && !isHighwayArea(tag)) return std::nullopt;
+    for (const AreaRule& rule : kAreaRules) {
+        const char* value = tag(rule.key);
+        if (value && (rule.value.empty() || trim(value) == rule.value) && applies(rule, tag)) return rule.kind;
+    }
     return std::nullopt;
 }
 

@@ -13,9 +13,20 @@ namespace urbis {
 /// `diameter_crown` (with units) over the defaults.
 Tree treeFromTags(const TagLookup& tag, int64_t osmId);
 
-/// The kind of area a closed way or multipolygon stands for: leisure=park|garden -> Park,
-/// landuse=grass|meadow -> Grass, landuse=forest and natural=wood -> Forest,
-/// natural=water and waterway=riverbank -> Water; nullopt for anything else.
+/// The kind of ground a closed way or multipolygon covers; nullopt for none. Tags are tried in
+/// this order, and the first that names a kind wins (docs/streets.md, "Street tags"):
+///  1. water: natural=water|wetland, waterway=riverbank, water=*, landuse=basin|reservoir: a
+///     polygon that says it is water is water, whatever landuse it also carries;
+///  2. pedestrian: area:highway=*, place=square, and highway=* with area=yes (on a multipolygon
+///     relation highway=* alone): squares and plazas;
+///  3. parking: amenity=parking, unless parking=underground|multi-storey;
+///  4. leisure (the use of this very place): pitch, playground, park|garden -> Park;
+///  5. natural (what grows there): sand|beach -> Sand, scrub|heath -> Scrub, wood -> Forest,
+///     grassland -> Grass;
+///  6. landuse (the broadest, often under the others): forest, cemetery,
+///     grass|meadow|village_green -> Grass, farmland|farmyard -> Farmland, residential,
+///     commercial|retail -> Commercial, industrial|railway -> Industrial.
+/// A `highway` way without area=yes is a road, never an area.
 std::optional<AreaKind> areaKindFromTags(const TagLookup& tag);
 
 } // namespace urbis

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -45,24 +46,40 @@ struct RawBuilding {
     bool underground = false;      ///< isUnderground: dropped as "underground" where it would be kept
 };
 
-/// A park, grass, forest or water area; like RawBuilding.
+/// A ground-cover area (park, water, square, car park, landuse...); like RawBuilding.
 struct RawArea {
     Area attributes;
     std::vector<GeoPolygon> polygons;
     const char* problem = nullptr;
+    std::map<std::string, uint64_t> tagIssues; ///< counted (as repaired) only if the area is kept
 };
 
-/// A highway way: attributes and its centerline pieces (split where nodes are missing).
-struct RawRoad {
-    Road attributes;
+/// A highway or railway way: attributes and its centerline pieces (split where nodes are missing).
+template <typename Way>
+struct RawLine {
+    Way attributes;
     std::vector<GeoLine> pieces;
-    std::map<std::string, uint64_t> tagIssues; ///< counted (as repaired) only if the road is kept
+    std::map<std::string, uint64_t> tagIssues; ///< counted (as repaired) only if the way is kept
+};
+using RawRoad = RawLine<Road>;
+using RawRailway = RawLine<Railway>;
+
+/// A crossing at a node, still in degrees.
+struct RawCrossing {
+    Crossing attributes;  ///< osmId: the node's id
+    LonLat position;
 };
 
 struct RawFeatures {
     std::vector<RawBuilding> buildings;
     std::vector<RawArea> areas;
     std::vector<RawRoad> roads;
+    std::vector<RawRailway> railways;
+    std::vector<RawCrossing> crossings;        ///< crossing nodes (highway/railway/footway=crossing)
+    /// Nodes of footway=crossing ways, each with the way's kind: a crossing where a carriageway
+    /// shares the node (and no crossing node stands there already).
+    std::vector<RawCrossing> crossingWayNodes;
+    std::unordered_set<int64_t> carriagewayNodes; ///< ids of the nodes of carriageway roads (isCarriageway)
     std::vector<std::pair<Lamp, LonLat>> lamps;
     std::vector<std::pair<Tree, LonLat>> trees;
     GeoBox headerBox;                             ///< invalid when the file has none

@@ -196,4 +196,38 @@ Sidewalk parseSidewalk(std::string_view value) {
     return lookup(kTable, trim(value), S::Unknown);
 }
 
+RoadSurface parseRoadSurface(std::string_view value) {
+    using R = RoadSurface;
+    static constexpr std::array<std::pair<std::string_view, R>, 30> kTable = {{
+        {"asphalt", R::Asphalt}, {"paved", R::Asphalt}, {"chipseal", R::Asphalt},
+        {"concrete", R::Concrete}, {"concrete:plates", R::Concrete}, {"concrete:lanes", R::Concrete},
+        {"paving_stones", R::PavingStones}, {"paving_stones:lanes", R::PavingStones},
+        {"bricks", R::PavingStones}, {"sett", R::Sett}, {"unhewn_cobblestone", R::Cobblestone},
+        {"cobblestone", R::Cobblestone}, {"cobblestone:flattened", R::Sett}, {"gravel", R::Gravel},
+        {"fine_gravel", R::Gravel}, {"compacted", R::Gravel}, {"pebblestone", R::Gravel},
+        {"unpaved", R::Gravel}, {"dirt", R::Dirt}, {"ground", R::Dirt}, {"earth", R::Dirt},
+        {"mud", R::Dirt}, {"sand", R::Dirt}, {"grass", R::Grass}, {"grass_paver", R::Grass},
+        {"wood", R::Wood}, {"woodchips", R::Dirt}, {"metal", R::Metal}, {"metal_grid", R::Metal},
+        {"steel", R::Metal}}};
+    const std::string_view s = trim(value);
+    return lookup(kTable, trim(s.substr(0, s.find(';'))), R::Unknown);
+}
+
+bool isMalformedValue(std::string_view value) {
+    const std::string_view s = trim(value);
+    const auto allowed = [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == ':' || c == ';' || c == '-';
+    };
+    return s.empty() || !std::all_of(s.begin(), s.end(), allowed);
+}
+
+bool listHolds(std::string_view value, std::string_view name) {
+    while (true) {
+        const size_t end = value.find(';');
+        if (trim(value.substr(0, end)) == name) return true;
+        if (end == std::string_view::npos) return false;
+        value.remove_prefix(end + 1);
+    }
+}
+
 } // namespace urbis

@@ -55,4 +55,15 @@ HighwayClass parseHighwayClass(std::string_view value);
 /// `sidewalk=` value -> Sidewalk (Unknown for unlisted values).
 Sidewalk parseSidewalk(std::string_view value);
 
+/// `surface=` value -> RoadSurface, by look (concrete:plates -> Concrete, compacted -> Gravel,
+/// earth -> Dirt, grass_paver -> Grass, ...); the first of a `;` list; Unknown for unlisted values.
+RoadSurface parseRoadSurface(std::string_view value);
+
+/// Whether a tag value is malformed rather than merely unlisted: empty, or with characters that
+/// no OSM value of a key like `surface` uses (capitals, blanks inside, punctuation but `_ : ; -`).
+bool isMalformedValue(std::string_view value);
+
+/// Whether the `;`-separated list `value` holds `name` ("underground;indoor" holds "underground").
+bool listHolds(std::string_view value, std::string_view name);
+
 } // namespace urbis
