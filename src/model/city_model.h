@@ -113,7 +113,7 @@ struct Road {
     bool oneway = false;
     bool laneMarkings = true;     ///< false for `lane_markings=no`
     bool overtaking = true;       ///< false for `overtaking=no`: a solid centre line
-    bool area = false;            ///< `area=yes` (a pedestrian square drawn as a closed way)
+    bool area = false;            ///< `area=yes` on a way that is not closed (closed ones are Pedestrian areas)
     int layer = 0;
     bool bridge = false;
     bool tunnel = false;          ///< `tunnel=*` other than no (building_passage included)
