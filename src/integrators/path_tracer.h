@@ -46,8 +46,8 @@ struct BounceInfo {
 /// Whether MIS weighs light samples of `kind` against BSDF sampling. Not the sun's: its disk (about
 /// 7e-5 sr) has a light-sampling pdf thousands of times any BSDF's, where the power heuristic would
 /// give its light samples a weight of 1 to within (p_bsdf / p_sun)^2. So they count in full and a BSDF
-/// sample that finds the disk counts nothing (weights 1 and 0 sum to one as well): no BSDF pdf per sun
-/// sample, no weight per escaped ray that finds the disk.
+/// sample that finds the disk counts nothing (weights 1 and 0 sum to one as well): no power heuristic
+/// per sun sample or per BSDF sample that finds the disk.
 URBIS_HD inline bool misWeighs(LightKind kind) { return kind != LightKind::Sun; }
 
 /// Weight of emission that a BSDF sample of `bounce` found, against `lightSamples` light samples
