@@ -58,7 +58,9 @@ Scene lightsScene() {
     Scene scene = Scene::build(mesh, {Material{}, test::emitter(Vec3f{4, 3, 2}), test::emitter(Vec3f{0.5f, 0.5f, 0.5f}),
                                       test::emitter(Vec3f{20, 20, 20})});
     scene.sun = makeSun(30.0f, 60.0f, 2.0f, Vec3f{3, 3, 3});
-    buildLights(scene);
+    LightBuildOptions everyLight;
+    everyLight.skyMinShare = 0.0f;  // the sky too, though the sun outshines it
+    buildLights(scene, everyLight);
     return scene;
 }
 
@@ -210,6 +212,20 @@ TEST(LightsPdf, IntegratesToOne) {
         return sum;
     };
     EXPECT_NEAR(chi2::integratePdf(pdf, towards), 1.0, 5e-3);
+}
+
+// The sky joins the light list where its table's power is at least half of the sun's and its own
+// together: under the default sun it is left to BSDF sampling, at night (no sun) it is light-sampled.
+TEST(LightsBuild, SkyJoinsWhereItOutshinesTheSun) {
+    Scene scene = Scene::build(TriangleMesh{}, {Material{}});
+    scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
+    buildLights(scene);
+    EXPECT_NE(scene.lights.sunLight, kNoLight);
+    EXPECT_EQ(scene.lights.skyLight, kNoLight);
+    scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{0, 0, 0});
+    buildLights(scene);
+    EXPECT_EQ(scene.lights.sunLight, kNoLight);
+    EXPECT_NE(scene.lights.skyLight, kNoLight);
 }
 
 // Over an infinite ground plane nothing below the horizon can be seen from above it: the sky's

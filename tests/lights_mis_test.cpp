@@ -23,7 +23,9 @@ TEST(LightsMis, WeightsOfBothStrategiesSumToOne) {
     test::addSquare(mesh, 2.0f, 3.0f, 1);
     Scene scene = Scene::build(mesh, {Material{}, test::emitter(Vec3f{4, 3, 2})});
     scene.sun = makeSun(50.0f, 60.0f, 3.0f, Vec3f{3, 3, 3});
-    buildLights(scene);
+    LightBuildOptions everyLight;
+    everyLight.skyMinShare = 0.0f;  // the sky too, though the sun outshines it
+    buildLights(scene, everyLight);
     const SceneView view = scene.view();
     Material glossy;
     glossy.kind = MaterialKind::Glossy;
@@ -48,12 +50,13 @@ TEST(LightsMis, WeightsOfBothStrategiesSumToOne) {
                         const float cosLight = record.kind == LightKind::EmissiveSurface ? -s.dir.y : 0.0f;
                         const float found = pmf * lightPdf(view, record, s.dir, s.distance, cosLight);
                         EXPECT_NEAR(found, lightPdfTotal, 1e-3f * lightPdfTotal);
-                        const float sum = lightSampleWeight(lightSamples, lightPdfTotal, bsdf) +
-                                          bsdfFoundWeight(BounceInfo{bsdf, false}, lightSamples, pmf, s.pdf);
+                        const float sum = lightSampleWeight(record.kind, lightSamples, lightPdfTotal, bsdf) +
+                                          bsdfFoundWeight(BounceInfo{bsdf, false}, record.kind, lightSamples, pmf, s.pdf);
                         EXPECT_NEAR(sum, 1.0f, 1e-5f);
                         ++checked;
                     }
     EXPECT_GT(checked, 500);
     // A specular bounce or the camera ray counts what it finds in full.
-    EXPECT_EQ(bsdfFoundWeight(BounceInfo{}, 1, 0.5f, 3.0f), 1.0f);
+    EXPECT_EQ(bsdfFoundWeight(BounceInfo{}, LightKind::EmissiveSurface, 1, 0.5f, 3.0f), 1.0f);
+    EXPECT_EQ(bsdfFoundWeight(BounceInfo{}, LightKind::Sun, 1, 0.5f, 3.0f), 1.0f);
 }

@@ -21,25 +21,34 @@ URBIS_HD inline float glossyLobeChance(const Material& m) {
     return d + s > 0.0f ? s / (d + s) : 0.0f;
 }
 
-/// f(wo, wi) * cos(wi, n) of a non-specular material; zero below the surface.
-URBIS_HD inline Vec3f evalBsdfCos(const Material& m, Vec3f wo, Vec3f wi, Vec3f n) {
-    float cosine = dot(wi, n);
+/// f(wo, wi) * cos(wi, n) of a non-specular material, and in `pdf` the solid-angle pdf with which
+/// sampleBsdf picks `wi`; both zero below the surface. One call for both, as light sampling needs
+/// them, so the cosine and the mirror direction are computed once.
+URBIS_HD inline Vec3f evalBsdf(const Material& m, Vec3f wo, Vec3f wi, Vec3f n, float& pdf) {
+    const float cosine = dot(wi, n);
+    pdf = 0.0f;
     if (cosine <= 0.0f || isSpecular(m)) return {};
     Vec3f f = m.albedo * (1.0f / kPi);
+    pdf = cosineHemispherePdf(cosine);
     if (m.kind == MaterialKind::Glossy) {
-        float c = fmaxf(0.0f, dot(wi, reflect(wo, n)));
-        f += m.specular * ((m.exponent + 2.0f) / (2.0f * kPi) * powf(c, m.exponent));
+        const float c = dot(wi, reflect(wo, n)), lobe = glossyLobeChance(m);
+        f += m.specular * ((m.exponent + 2.0f) / (2.0f * kPi) * powf(fmaxf(0.0f, c), m.exponent));
+        pdf = lobe * phongLobePdf(c, m.exponent) + (1.0f - lobe) * pdf;
     }
     return f * cosine;
 }
 
+/// f(wo, wi) * cos(wi, n) of a non-specular material; zero below the surface.
+URBIS_HD inline Vec3f evalBsdfCos(const Material& m, Vec3f wo, Vec3f wi, Vec3f n) {
+    float pdf;
+    return evalBsdf(m, wo, wi, n, pdf);
+}
+
 /// The solid-angle pdf with which sampleBsdf picks `wi` for a non-specular material.
 URBIS_HD inline float bsdfPdf(const Material& m, Vec3f wo, Vec3f wi, Vec3f n) {
-    float cosine = dot(wi, n);
-    if (cosine <= 0.0f || isSpecular(m)) return 0.0f;
-    if (m.kind != MaterialKind::Glossy) return cosineHemispherePdf(cosine);
-    float lobe = glossyLobeChance(m);
-    return lobe * phongLobePdf(dot(wi, reflect(wo, n)), m.exponent) + (1.0f - lobe) * cosineHemispherePdf(cosine);
+    float pdf;
+    evalBsdf(m, wo, wi, n, pdf);
+    return pdf;
 }
 
 struct BsdfSample {
@@ -78,9 +87,10 @@ URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, 
             s = {wi, m.albedo, false, cosineHemispherePdf(dot(wi, n))};   // cosine sampling: f * cos / pdf is the albedo
             return true;
         }
-        float pdf = bsdfPdf(m, wo, wi, n);
+        float pdf;
+        const Vec3f fCos = evalBsdf(m, wo, wi, n, pdf);
         if (!(pdf > 0.0f)) return false;
-        s = {wi, evalBsdfCos(m, wo, wi, n) / pdf, false, pdf};
+        s = {wi, fCos / pdf, false, pdf};
         return true;
     }
     }

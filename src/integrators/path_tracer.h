@@ -19,16 +19,19 @@ struct PathSample {
     uint32_t rays = 0;
 };
 
-/// Offset from a surface point along its facing normal, scaled with the point's magnitude so that
-/// new rays clear the surface at city coordinates (thousands of metres) in float precision.
-URBIS_HD inline Vec3f offsetRayOrigin(Vec3f p, Vec3f facingNormal) {
-    const float scale = 4e-6f * maxComponent(Vec3f{fabsf(p.x), fabsf(p.y), fabsf(p.z)}) + 1e-4f;
-    return p + facingNormal * scale;
+/// Offset from a surface point to clear it along its facing normal, scaled with the point's magnitude
+/// so that new rays clear the surface at city coordinates (thousands of metres) in float precision.
+URBIS_HD inline Vec3f rayOriginOffset(Vec3f p, Vec3f facingNormal) {
+    return facingNormal * (4e-6f * maxComponent(Vec3f{fabsf(p.x), fabsf(p.y), fabsf(p.z)}) + 1e-4f);
 }
+
+/// The origin of rays that leave the surface point `p` on the side of `facingNormal`.
+URBIS_HD inline Vec3f offsetRayOrigin(Vec3f p, Vec3f facingNormal) { return p + rayOriginOffset(p, facingNormal); }
 
 /// A scattering point of the path, kept while its light samples are traced.
 struct PathVertex {
-    Vec3f position, normal, wo;  ///< normal: geometric, on the side of wo
+    Vec3f origin;                ///< of its shadow rays, offset from the surface (offsetRayOrigin); lights are sampled from it
+    Vec3f normal, wo;            ///< normal: geometric, on the side of wo
     Vec3f throughput;            ///< of the path up to this vertex
     uint32_t material = 0;
     bool bsdfStrategy = false;   ///< whether the path samples its BSDF here (not at maxDepth): MIS counts it
@@ -40,52 +43,61 @@ struct BounceInfo {
     bool countsInFull = true;  ///< camera rays and specular bounces: no light sample can find the same light
 };
 
+/// Whether MIS weighs light samples of `kind` against BSDF sampling. Not the sun's: its disk (about
+/// 7e-5 sr) has a light-sampling pdf thousands of times any BSDF's, where the power heuristic would
+/// give its light samples a weight of 1 to within (p_bsdf / p_sun)^2. So they count in full and a BSDF
+/// sample that finds the disk counts nothing (weights 1 and 0 sum to one as well): no power heuristic
+/// per sun sample or per BSDF sample that finds the disk.
+URBIS_HD inline bool misWeighs(LightKind kind) { return kind != LightKind::Sun; }
+
 /// Weight of emission that a BSDF sample of `bounce` found, against `lightSamples` light samples
-/// that pick `light` with `selectionPmf` and reach the same point with solid-angle pdf `pdf`.
-URBIS_HD inline float bsdfFoundWeight(const BounceInfo& bounce, uint32_t lightSamples, float selectionPmf, float pdf) {
-    if (bounce.countsInFull) return 1.0f;
+/// that pick `light` (of kind `kind`) with `selectionPmf` and reach the same point with solid-angle pdf `pdf`.
+URBIS_HD inline float bsdfFoundWeight(const BounceInfo& bounce, LightKind kind, uint32_t lightSamples, float selectionPmf,
+                                      float pdf) {
+    if (bounce.countsInFull || lightSamples == 0 || !(selectionPmf > 0.0f)) return 1.0f;
+    if (!misWeighs(kind)) return 0.0f;
     return powerHeuristic(1.0f, bounce.pdf, float(lightSamples), selectionPmf * pdf);
 }
 
-/// Weight of one of `lightSamples` light samples of solid-angle pdf `lightPdf` (selection
-/// included) against the BSDF sample of the same vertex, which would find that direction with
-/// `bsdfPdf`.
-URBIS_HD inline float lightSampleWeight(uint32_t lightSamples, float lightPdf, float bsdfPdf) {
+/// Weight of one of `lightSamples` light samples of a light of kind `kind`, of solid-angle pdf
+/// `lightPdf` (selection included), against the BSDF sample of the same vertex, which would find
+/// that direction with `bsdfPdf`.
+URBIS_HD inline float lightSampleWeight(LightKind kind, uint32_t lightSamples, float lightPdf, float bsdfPdf) {
+    if (!misWeighs(kind)) return 1.0f;
     return powerHeuristic(float(lightSamples), lightPdf, 1.0f, bsdfPdf);
 }
 
-/// The shadow ray from a surface point towards a light sample. Towards a point of a surface it is
-/// aimed from the offset origin at that point and stops short of it, so that the emitter does not
-/// block its own light (aimed along the sampled direction, its surface lies at the ray's end only
-/// within rounding, and it would block half of the rays).
-URBIS_HD inline Ray shadowRayTowards(Vec3f position, Vec3f facingNormal, const LightSample& ls) {
-    const Vec3f origin = offsetRayOrigin(position, facingNormal);
+/// The shadow ray from `origin`, where the light sample was drawn, towards it. Towards a point of a
+/// surface it stops short of that point, so that the emitter does not block its own light.
+URBIS_HD inline Ray shadowRayTowards(Vec3f origin, const LightSample& ls) {
     if (!(ls.distance < 3.0e38f)) return Ray{origin, ls.dir};
-    const Vec3f toTarget = position + ls.dir * ls.distance - origin;
-    const float distance = length(toTarget);
-    return Ray{origin, toTarget / distance, 0.0f, distance * (1.0f - 1e-4f)};
+    return Ray{origin, ls.dir, 0.0f, ls.distance * (1.0f - 1e-4f)};
 }
 
 /// One light sample from `vertex`: the shadow ray towards the light and what it adds if nothing
 /// blocks it. Returns false when it adds nothing (then no ray is traced).
 URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSettings& settings, const PathVertex& vertex,
                                      SampleStream& rng, Ray& shadow, Vec3f& contribution) {
-    const float uLight = rng.draw(), u0 = rng.draw(), u1 = rng.draw(), u2 = rng.draw();
+    // Numbers are drawn only where they choose something (each draw is a hash): the light where
+    // there is more than one, the triangle of a surface.
+    const float uLight = lightCount(scene.lights) > 1 ? rng.draw() : 0.0f;
     float pmf;
     const uint32_t index = selectLight(scene.lights, settings.lightSampler, uLight, pmf);
     if (!(pmf > 0.0f)) return false;
     LightSample ls;
-    if (!sampleLight(scene, lightRecord(scene.lights, index), vertex.position, u0, u1, u2, ls)) return false;
+    const LightRecord light = lightRecord(scene.lights, index);
+    const float u0 = light.kind == LightKind::EmissiveSurface ? rng.draw() : 0.0f;
+    const float u1 = rng.draw(), u2 = rng.draw();
+    if (!sampleLight(scene, light, vertex.origin, u0, u1, u2, ls)) return false;
     const Material& material = scene.materials[vertex.material];
-    const Vec3f fCos = evalBsdfCos(material, vertex.wo, ls.dir, vertex.normal);
+    float pdfBsdf;
+    const Vec3f fCos = evalBsdf(material, vertex.wo, ls.dir, vertex.normal, pdfBsdf);
     const float lightPdf = pmf * ls.pdf;
     if (!(maxComponent(fCos) > 0.0f) || !(lightPdf > 0.0f)) return false;
-    const float weight =
-        vertex.bsdfStrategy ? lightSampleWeight(settings.lightSamples, lightPdf, bsdfPdf(material, vertex.wo, ls.dir, vertex.normal))
-                            : 1.0f;
+    const float weight = vertex.bsdfStrategy ? lightSampleWeight(light.kind, settings.lightSamples, lightPdf, pdfBsdf) : 1.0f;
     contribution = vertex.throughput * fCos * ls.radiance * (weight / (float(settings.lightSamples) * lightPdf));
     if (!(maxComponent(contribution) > 0.0f)) return false;
-    shadow = shadowRayTowards(vertex.position, vertex.normal, ls);
+    shadow = shadowRayTowards(vertex.origin, ls);
     return true;
 }
 
@@ -119,7 +131,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             const LightRecord sky{LightKind::Sky, 0, 0.0f};
             float skyWeight = 1.0f;
             if (!bounce.countsInFull && lights.skyLight != kNoLight)
-                skyWeight = bsdfFoundWeight(bounce, settings.lightSamples,
+                skyWeight = bsdfFoundWeight(bounce, LightKind::Sky, settings.lightSamples,
                                             lightSelectionPmf(lights, settings.lightSampler, lights.skyLight),
                                             lightPdf(scene, sky, dir, 0.0f, 0.0f));
             out.radiance += throughput * skyRadiance(scene.sky, dir) * skyWeight;
@@ -127,7 +139,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             if (depth > 0 && sunEnabled(scene.sun) && sunContains(scene.sun, dir)) {
                 float sunWeight = 1.0f;
                 if (!bounce.countsInFull)
-                    sunWeight = bsdfFoundWeight(bounce, settings.lightSamples,
+                    sunWeight = bsdfFoundWeight(bounce, LightKind::Sun, settings.lightSamples,
                                                 lightSelectionPmf(lights, settings.lightSampler, lights.sunLight),
                                                 sunPdf(scene.sun));
                 out.radiance += throughput * scene.sun.radiance * sunWeight;
@@ -141,13 +153,14 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                 const uint32_t light = hit.material < lights.materialCount ? lights.lightOfMaterial[hit.material] : kNoLight;
                 float weight = 1.0f;
                 if (light != kNoLight && !bounce.countsInFull)
-                    weight = bsdfFoundWeight(bounce, settings.lightSamples,
+                    weight = bsdfFoundWeight(bounce, LightKind::EmissiveSurface, settings.lightSamples,
                                              lightSelectionPmf(lights, settings.lightSampler, light),
                                              lightPdf(scene, lightRecord(lights, light), dir, hit.t * length(ray.dir),
                                                       dot(hit.normal, dir)));
                 out.radiance += throughput * material.emission * weight;
             }
-            vertex.position = hit.position;
+            const Vec3f offset = rayOriginOffset(hit.position, hit.normal);
+            vertex.origin = hit.position + offset;
             vertex.normal = hit.normal;
             vertex.wo = -dir;
             vertex.throughput = throughput;
@@ -176,8 +189,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             lightSamplesLeft = scatters ? settings.lightSamples : 0;
             pathEnds = !goesOn;
             if (goesOn) {
-                pathRay = Ray{offsetRayOrigin(vertex.position, dot(bsdf.dir, hit.normal) > 0.0f ? hit.normal : -hit.normal),
-                              bsdf.dir};
+                pathRay = Ray{dot(bsdf.dir, hit.normal) > 0.0f ? vertex.origin : hit.position - offset, bsdf.dir};
                 ++depth;
             }
         }

@@ -129,12 +129,17 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
         double integral = 0;
         std::vector<float> func =
             skyLuminanceTable(scene.sky, options.skyWidth, options.skyHeight, !scene.grounds.empty(), options.compensateSky, integral);
-        if (integral > 0) {
+        // Under a bright sun a sky sample takes the place of a sun sample, whose shadows make most of
+        // the noise, and its shadow ray is incoherent: the sky is then BSDF sampling's alone (counted
+        // in full, unbiased), as it is where the table is empty (docs/lights.md § The light set).
+        const double skyPower = disk * integral;
+        const double sunPower = lights.records.empty() ? 0.0 : double(lights.records.front().power);
+        if (integral > 0 && skyPower >= double(options.skyMinShare) * (skyPower + sunPower)) {
             lights.skyTable = buildPiecewiseConstant2D(func, options.skyWidth, options.skyHeight);
             lights.info.skyNu = options.skyWidth;
             lights.info.skyNv = options.skyHeight;
             lights.info.skyLight = uint32_t(lights.records.size());
-            lights.records.push_back({LightKind::Sky, 0, float(disk * integral)});
+            lights.records.push_back({LightKind::Sky, 0, float(skyPower)});
         }
     }
     float area = 0;

@@ -12,6 +12,9 @@ struct LightBuildOptions {
     bool sun = true, sky = true, surfaces = true;  ///< which kinds join the list (tests leave some out)
     uint32_t skyWidth = 128, skyHeight = 64;       ///< cells of the sky's table in azimuth and polar angle
     bool compensateSky = true;                     ///< the sky's table holds what exceeds its mean (light_build.cpp)
+    /// The sky joins the list only where its (compensated) power is at least this share of the sun's
+    /// and its own together (light_build.cpp); 0: wherever its table is not empty.
+    float skyMinShare = 0.5f;
 };
 
 /// Fills the light arrays of `scene` (scene_arrays.h) and scene.lights from the rest of it. What is left out of the list is still found by
