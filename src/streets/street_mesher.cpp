@@ -1,11 +1,15 @@
 #include "streets/street_mesher.h"
 
+#include "streets/bridge_mesher.h"
+#include "streets/railway_mesher.h"
+#include "streets/road_elevation.h"
+
 namespace urbis {
 
 StreetMesh meshStreets(const CityModel& city, const StreetOptions& options) {
     StreetMesh out;
-    (void)city;
-    (void)options;
+    meshBridges(city.roads, roadElevations(city.roads), options, out);
+    meshRailways(city, options, out);
     return out;
 }
 
