@@ -118,6 +118,35 @@ TEST(StreetsBridgeStructure, ApproachesStandOnWalls) {
     EXPECT_EQ(c.out.trianglesByKind.at("bridges"), c.out.mesh.size());
 }
 
+TEST(StreetsBridgeStructure, ShortBridgeLandingOnJunctionsStillClearsTheRoadBelow) {
+    // A 30 m bridge between two junctions 30 m apart, over a road at x = 15: the slope alone would
+    // allow 0.9 m; the crossing holds the segment over the road at the clearance, and the deck comes
+    // down at the slope from there (0.6 m over 10 m), the junctions rising with it.
+    std::vector<Road> roads = {way(line({0, 0}, {30, 0}), true),    way(line({0, 0}, {-120, 0}), false),
+                               way(line({0, 0}, {0, 120}), false),  way(line({30, 0}, {150, 0}), false),
+                               way(line({30, 0}, {30, 120}), false), way(line({15, -50}, {15, 50}), false, 6.0f)};
+    const std::vector<std::vector<float>> e = roadElevations(roads);
+    ASSERT_EQ(e[0].size(), 4u);
+    EXPECT_FLOAT_EQ(e[0][1], 6.0f);
+    EXPECT_FLOAT_EQ(e[0][2], 6.0f);
+    EXPECT_NEAR(e[0].front(), 5.4f, 1e-4);
+    EXPECT_NEAR(e[0].back(), 5.4f, 1e-4);
+    for (float h : e[5]) EXPECT_EQ(h, 0.0f) << "the road below stays on the ground";
+    for (size_t w = 1; w < 5; ++w) {
+        EXPECT_NEAR(e[w].front(), 5.4f, 1e-4) << "every way at the junction rises with it";
+        for (size_t i = 1; i < e[w].size(); ++i) EXPECT_LE(std::fabs(e[w][i] - e[w][i - 1]), 0.06f * 10.0f + 1e-4f);
+        EXPECT_EQ(e[w].back(), 0.0f) << "and ramps down to the ground";
+    }
+    StreetMesh out;
+    meshBridges(roads, e, StreetOptions{}, out);
+    const Scene scene = Scene::build(out.mesh, streetMaterials());
+    const SurfaceHit under =
+        traceScene(scene.view(), Ray{worldFromStreet({15, 0}, kRoadLevel + 0.05), Vec3f{0, 1, 0}}, false);
+    ASSERT_TRUE(under.valid());
+    EXPECT_EQ(under.part, SurfacePart::BridgeDeck);
+    EXPECT_GE(under.position.y - kRoadLevel, 4.0f);
+}
+
 TEST(StreetsBridgeStructure, BadBridgesAreCountedNotMeshed) {
     std::vector<Road> roads = {way({{0, 0}}, true), way({{0, 0}, {0, 0}}, true), way({{NAN, 0}, {10, 0}}, true),
                                way({{1e300, 0}, {-1e300, 0}}, true), way(line({0, 0}, {50, 0}), true)};

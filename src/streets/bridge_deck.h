@@ -32,12 +32,6 @@ size_t addRibbon(TriangleMesh& mesh, const std::vector<Vec2d>& a, const std::vec
 /// Heights `base` plus `offset` at every point.
 std::vector<float> raised(const std::vector<float>& base, float offset);
 
-/// Whether a road or a railway is drawn at the surface at all (tunnels and the like are not).
-template <class Way>
-bool atSurface(const Way& w) {
-    return !w.tunnel && !w.covered && !w.underground && w.layer >= 0;
-}
-
 /// A line fit to mesh: two or more points within 10,000 km of the origin, over 1 cm long.
 bool meshableLine(const std::vector<Vec2d>& line);
 

@@ -11,16 +11,9 @@ namespace urbis {
 
 namespace {
 
-constexpr double kCell = 32.0;          // m, the obstacle grid's cell
 constexpr double kColumnHalf = 0.6;     // m, half a column's side
 constexpr double kColumnsEvery = 10.0;  // m of deck width per column
 constexpr double kShifts[] = {0.0, 4.0, -4.0, 8.0, -8.0};  // m along the deck, tried in order
-
-double distanceToSegment(Vec2d p, Vec2d a, Vec2d b) {
-    const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
-    const double t = length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
-    return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
 
 /// A point `s` metres along `line` and the unit direction there; false past its end.
 bool pointAlong(const std::vector<Vec2d>& line, const std::vector<float>& elevation, double s, Vec2d& p,
@@ -58,30 +51,9 @@ size_t addColumn(TriangleMesh& mesh, Vec2d c, Vec2d d, float top, TriangleInfo i
 
 } // namespace
 
-int64_t PierObstacles::cellOf(double coordinate) { return int64_t(std::floor(coordinate / kCell)); }
-
-uint64_t PierObstacles::cellKey(int64_t cx, int64_t cy) { return (uint64_t(cx) << 32) ^ uint64_t(uint32_t(cy)); }
-
-void PierObstacles::add(const std::vector<Vec2d>& line, double halfWidth, int level) {
-    for (size_t i = 1; i < line.size(); ++i) {
-        const Vec2d a = line[i - 1], b = line[i];
-        if (!(std::hypot(b.x - a.x, b.y - a.y) < 10000.0) || !(std::fabs(a.x) < 1e7 && std::fabs(a.y) < 1e7)) continue;
-        const uint32_t index = uint32_t(segments_.size());
-        segments_.push_back({a, b, halfWidth, level});
-        const double reach = halfWidth + kColumnHalf * 2;
-        for (int64_t cx = cellOf(std::min(a.x, b.x) - reach); cx <= cellOf(std::max(a.x, b.x) + reach); ++cx)
-            for (int64_t cy = cellOf(std::min(a.y, b.y) - reach); cy <= cellOf(std::max(a.y, b.y) + reach); ++cy)
-                cells_[cellKey(cx, cy)].push_back(index);
-    }
-}
-
 bool PierObstacles::blocks(Vec2d p, double radius, int level) const {
-    const auto it = cells_.find(cellKey(cellOf(p.x), cellOf(p.y)));
-    if (it == cells_.end()) return false;
-    for (uint32_t index : it->second) {
-        const Segment& s = segments_[index];
-        if (s.level < level && distanceToSegment(p, s.a, s.b) < s.halfWidth + radius) return true;
-    }
+    for (const SegmentGrid::Segment* s : grid_.near(p, p))
+        if (s->level < level && distanceToSegment(p, s->a, s->b) < s->reach - 1.0 + radius) return true;
     return false;
 }
 

@@ -4,9 +4,9 @@
 
 #include "model/city_model.h"
 #include "scene/triangle_mesh.h"
+#include "streets/bridge_segment_grid.h"
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace urbis {
@@ -19,26 +19,16 @@ inline constexpr float kPierMinClearance = 2.5f;
 inline constexpr int kGroundLevel = -1000;
 
 /// Where piers may not stand: the ways under a deck in plan (their centerlines widened by half their
-/// width) at their level, binned in a uniform grid.
+/// width) at their level (kGroundLevel, or a bridge's layer).
 class PierObstacles {
 public:
-    /// Adds a way at `level` (kGroundLevel, or a bridge's layer), `halfWidth` metres each side of its
-    /// centerline. Segments longer than 10 km or beyond 10,000 km are left out (no city holds them).
-    void add(const std::vector<Vec2d>& line, double halfWidth, int level);
-    /// Whether a column of `radius` metres at `p` would stand on, or pass through, a way of a level
-    /// below `level`.
+    void add(const std::vector<Vec2d>& line, double halfWidth, int level) { grid_.add(line, halfWidth + 1.0, 0, level); }
+    /// Whether a column of `radius` metres (at most 1 m) at `p` would stand on, or pass through, a
+    /// way of a level below `level`.
     bool blocks(Vec2d p, double radius, int level) const;
 
 private:
-    struct Segment {
-        Vec2d a, b;
-        double halfWidth = 0;
-        int level = kGroundLevel;
-    };
-    static int64_t cellOf(double coordinate);
-    static uint64_t cellKey(int64_t cx, int64_t cy);
-    std::vector<Segment> segments_;
-    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
+    SegmentGrid grid_;
 };
 
 /// Per line: metres along its chain of consecutive lines (one's end point equal to the next's start)

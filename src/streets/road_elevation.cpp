@@ -1,5 +1,7 @@
 #include "streets/road_elevation.h"
 
+#include "streets/bridge_segment_grid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -99,30 +101,71 @@ std::vector<double> capHeights(const WayGraph& g) {
     return height;
 }
 
-/// Heights a ground way needs to meet a deck: max over bridge points b of e(b) - slope * distance, over
-/// ground edges only; <= 0 where no deck is near.
-std::vector<double> approachHeights(const WayGraph& g, const std::vector<double>& deck) {
-    const size_t n = g.edges.size();
-    std::vector<double> height(n, 0.0);
+/// The heights that `seeds` (a height per node, 0 for none) hold up: max over seeded nodes u of
+/// seed(u) - slope * d(u, v), over the bridge ways' edges (`overBridges`) or the ground ways', never
+/// raising nor passing a `pinned` node (none if empty); 0 where no seed is near.
+std::vector<double> heldUp(const WayGraph& g, std::vector<double> height, bool overBridges,
+                           const std::vector<uint8_t>& pinned) {
     std::priority_queue<Entry> queue;
-    for (uint32_t v = 0; v < n; ++v)
-        if (g.onBridge[v] && deck[v] > 0.0) {
-            height[v] = deck[v];
-            queue.push({deck[v], v});
-        }
+    for (uint32_t v = 0; v < height.size(); ++v)
+        if (height[v] > 0.0) queue.push({height[v], v});
     while (!queue.empty()) {
         const auto [h, v] = queue.top();
         queue.pop();
         if (h < height[v]) continue;
         for (const Edge& e : g.edges[v]) {
             const double next = h - kMaxRampSlope * e.length;
-            if (!e.bridge && next > height[e.to]) {
+            if (e.bridge == overBridges && next > height[e.to] && (pinned.empty() || !pinned[e.to])) {
                 height[e.to] = next;
                 queue.push({next, e.to});
             }
         }
     }
     return height;
+}
+
+bool samePoint(Vec2d a, Vec2d b) { return a.x == b.x && a.y == b.y; }
+
+/// Whether two segments cross or touch (not where they share a point: ways meeting at a node).
+bool segmentsCross(Vec2d p0, Vec2d p1, Vec2d q0, Vec2d q1) {
+    if (samePoint(p0, q0) || samePoint(p0, q1) || samePoint(p1, q0) || samePoint(p1, q1)) return false;
+    const double rx = p1.x - p0.x, ry = p1.y - p0.y, sx = q1.x - q0.x, sy = q1.y - q0.y;
+    const double den = rx * sy - ry * sx;
+    if (!(std::fabs(den) > 0.0)) return false;
+    const double qx = q0.x - p0.x, qy = q0.y - p0.y;
+    const double t = (qx * sy - qy * sx) / den, u = (qx * ry - qy * rx) / den;
+    return t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0;
+}
+
+/// Where bridges cross ground ways drawn at the surface in plan: per node, the clearance at which a
+/// crossing bridge segment holds its two ends (0 where none crosses), and whether a ground segment
+/// under a bridge ends there.
+struct Crossings {
+    std::vector<double> held;
+    std::vector<uint8_t> under;
+};
+
+Crossings findCrossings(const std::vector<ElevatedWay>& ways, const WayGraph& g) {
+    SegmentGrid ground;
+    for (size_t w = 0; w < ways.size(); ++w)
+        if (!ways[w].bridge && ways[w].surface) ground.add(*ways[w].line, 0.0, uint32_t(w), 0);
+    Crossings c{std::vector<double>(g.edges.size(), 0.0), std::vector<uint8_t>(g.edges.size(), 0)};
+    for (size_t w = 0; w < ways.size(); ++w) {
+        if (!ways[w].bridge || !ways[w].surface) continue;
+        const std::vector<Vec2d>& line = *ways[w].line;
+        for (size_t i = 1; i < line.size(); ++i) {
+            const Vec2d a = line[i - 1], b = line[i];
+            const Vec2d lo{std::min(a.x, b.x), std::min(a.y, b.y)}, hi{std::max(a.x, b.x), std::max(a.y, b.y)};
+            for (const SegmentGrid::Segment* s : ground.near(lo, hi)) {
+                if (!segmentsCross(a, b, s->a, s->b)) continue;
+                for (uint32_t node : {g.nodeOf[w][i - 1], g.nodeOf[w][i]})
+                    c.held[node] = std::max(c.held[node], double(bridgeClearance(ways[w].layer)));
+                c.under[g.nodeOf[s->way][s->end - 1]] = 1;
+                c.under[g.nodeOf[s->way][s->end]] = 1;
+            }
+        }
+    }
+    return c;
 }
 
 } // namespace
@@ -132,14 +175,16 @@ float bridgeClearance(int layer) { return layer == 0 ? 5.0f : 6.0f * float(std::
 std::vector<std::vector<float>> wayElevations(const std::vector<ElevatedWay>& ways) {
     const WayGraph g = buildGraph(ways);
     const std::vector<double> cap = capHeights(g);
-    const std::vector<double> approach = approachHeights(g, cap);
+    Crossings crossings = findCrossings(ways, g);
+    const std::vector<double> held = heldUp(g, std::move(crossings.held), true, {});
+    // Both are kMaxRampSlope-Lipschitz along the bridges, so is their maximum; the approaches too,
+    // except next to a ground way under a bridge, which stays on the ground (it would not pass under).
+    std::vector<double> deck(g.edges.size(), 0.0);
+    for (size_t v = 0; v < deck.size(); ++v)
+        if (g.onBridge[v]) deck[v] = std::max(std::isfinite(cap[v]) ? cap[v] : 0.0, held[v]);
+    const std::vector<double> height = heldUp(g, deck, false, crossings.under);
     std::vector<float> node(g.edges.size());
-    for (size_t v = 0; v < node.size(); ++v) {
-        // cap is kMaxRampSlope-Lipschitz along every way, so an approach (a deck minus the slope times
-        // the distance) never rises above what the anchors allow.
-        const double h = g.onBridge[v] ? cap[v] : approach[v];
-        node[v] = std::isfinite(h) ? float(std::max(h, 0.0)) : 0.0f;
-    }
+    for (size_t v = 0; v < node.size(); ++v) node[v] = float(std::max(height[v], 0.0));
     std::vector<std::vector<float>> out(ways.size());
     for (size_t w = 0; w < ways.size(); ++w)
         for (uint32_t v : g.nodeOf[w]) out[w].push_back(node[v]);
@@ -149,14 +194,14 @@ std::vector<std::vector<float>> wayElevations(const std::vector<ElevatedWay>& wa
 std::vector<std::vector<float>> roadElevations(const std::vector<Road>& roads) {
     std::vector<ElevatedWay> ways;
     ways.reserve(roads.size());
-    for (const Road& r : roads) ways.push_back({&r.centerline, r.bridge, r.layer});
+    for (const Road& r : roads) ways.push_back({&r.centerline, r.bridge, r.layer, atSurface(r)});
     return wayElevations(ways);
 }
 
 std::vector<std::vector<float>> railwayElevations(const std::vector<Railway>& railways) {
     std::vector<ElevatedWay> ways;
     ways.reserve(railways.size());
-    for (const Railway& r : railways) ways.push_back({&r.centerline, r.bridge, r.layer});
+    for (const Railway& r : railways) ways.push_back({&r.centerline, r.bridge, r.layer, atSurface(r)});
     return wayElevations(ways);
 }
 
