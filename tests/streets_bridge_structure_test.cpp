@@ -115,6 +115,7 @@ TEST(StreetsBridgeStructure, ApproachesStandOnWalls) {
     // 150 m before it the approach is on the ground: nothing there.
     EXPECT_FALSE(traceScene(c.scene.view(), Ray{worldFromStreet({-150, 20}, 0.1), Vec3f{0, 0, 1}}, false).valid());
     EXPECT_EQ(c.out.counts.at("bridges"), 1u);
+    EXPECT_EQ(c.out.objects, 4u) << "an id for every road";
     EXPECT_EQ(c.out.trianglesByKind.at("bridges"), c.out.mesh.size());
 }
 

@@ -81,6 +81,7 @@ void meshBridges(const std::vector<Road>& roads, const std::vector<std::vector<f
         if (!atSurface(r) || !meshableLine(r.centerline) || e.size() != r.centerline.size()) continue;
         triangles += meshEmbankments(r.centerline, e, shape, deck, parapet, out.mesh);
     }
+    out.objects = std::max(out.objects, uint32_t(roads.size()));
     out.counts["bridges"] += bridges;
     out.trianglesByKind["bridges"] += triangles;
 }

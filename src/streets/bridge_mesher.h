@@ -12,8 +12,9 @@ namespace urbis {
 /// Meshes the structure of every bridge road at `elevations` (roadElevations of `roads`), its deck as
 /// wide as its carriageway (Road::width) plus its sidewalks (sidewalkLeftWidth, sidewalkRightWidth),
 /// and embankment walls under the lifted parts of ground roads (approaches). Object id: the road's,
-/// options.firstObject + its index. Adds `bridges` to out.counts and their triangles (approaches
-/// included) to out.trianglesByKind["bridges"]; degenerate bridges to out.dropped.
+/// options.firstObject + its index (out.objects covers every road's). Adds `bridges` to out.counts
+/// and their triangles (approaches included) to out.trianglesByKind["bridges"]; degenerate bridges
+/// to out.dropped.
 void meshBridges(const std::vector<Road>& roads, const std::vector<std::vector<float>>& elevations,
                  const StreetOptions& options, StreetMesh& out);
 

@@ -113,6 +113,7 @@ void meshRailways(const CityModel& city, const StreetOptions& options, StreetMes
         }
         ++meshed;
     }
+    out.objects = std::max(out.objects, uint32_t(city.roads.size() + railways.size()));
     out.counts["railways"] += meshed;
     out.trianglesByKind["railways"] += triangles;
 }
