@@ -321,6 +321,32 @@ TEST(MarkingsLayout, UvIsDistanceAlongAndAcrossOnARotatedSegment) {
     EXPECT_NEAR(roadCoordinates(east, 3.0f, -2.0f).y, 2.0f, 1e-6f);
 }
 
+TEST(MarkingsLayout, TracedPaintIsTheMarkingFunctionsOnARotatedGrid) {
+    RoadSegment s = straightSegment(kMarkCentreLine | kMarkCentreDashed | kMarkLaneDividers | kMarkEdgeLines |
+                                        kMarkStopAtStart | kMarkStopAtEnd | kMarkZebraAtStart,
+                                    25.0f, 0.0f, 4.0f);
+    s.start = {3.0f, -8.0f};
+    s.direction = {-0.6f, 0.8f};
+    s.halfWidth = 7.0f;
+    s.lanesForward = s.lanesBackward = 2;
+    const Scene scene = roadScene({s});
+    size_t paintedPoints = 0, points = 0;
+    for (float along = 0.03f; along < 25.0f; along += 0.07f)
+        for (float across = -6.97f; across < 7.0f; across += 0.05f) {
+            const uint32_t expected = roadPaintAt(s, along, across);
+            // Points within a float's rounding of a line's edge may fall either side once rotated.
+            if (roadPaintAt(s, along + 1e-3f, across) != expected || roadPaintAt(s, along - 1e-3f, across) != expected ||
+                roadPaintAt(s, along, across + 1e-3f) != expected || roadPaintAt(s, along, across - 1e-3f) != expected)
+                continue;
+            ++points;
+            paintedPoints += expected != kNoPaint;
+            ASSERT_EQ(materialAt(scene, along, across), expected == kNoPaint ? kAsphalt : kWhite + expected - 1)
+                << along << ", " << across;
+        }
+    EXPECT_GT(points, 90000u);
+    EXPECT_GT(paintedPoints, 3000u);   // every kind of line is in the grid
+}
+
 TEST(MarkingsLayout, DashesRunOnAcrossTwoSegments) {
     // 10 m then 20 m: the dash at 9..12 m of the road crosses the join.
     const uint32_t dashed = kMarkCentreLine | kMarkCentreDashed;
