@@ -1,6 +1,7 @@
 // The triangle kind's intersector for the leaf dispatch (host+device): the watertight test.
 #pragma once
 
+#include "geometry/road_markings.h"
 #include "geometry/surface_hit.h"
 #include "geometry/triangle_intersect.h"
 
@@ -21,8 +22,19 @@ struct KindIntersector<Triangle> {
                                        const Ray& ray) {
         const TriangleInfo info = scene.triangleInfo[index];
         const Vec3f edge = tri.p1 - tri.p0;
-        return {kNoPrimKind, hit.t, pointAt(ray, hit.t), normalize(cross(edge, tri.p2 - tri.p0)), edge, {hit.u, hit.v},
-                info.material, info.object, SurfacePart(info.part)};
+        SurfaceHit out{kNoPrimKind, hit.t, pointAt(ray, hit.t), normalize(cross(edge, tri.p2 - tri.p0)), edge,
+                       {hit.u, hit.v}, info.material, info.object, SurfacePart(info.part)};
+        // A carriageway's object is its RoadSegment: uv becomes the road's (distance along, metres left),
+        // and paint replaces the surface's material where a marking covers the hit.
+        if (out.part == SurfacePart::Road && info.object < scene.roadSegments.size) {
+            const RoadSegment& segment = scene.roadSegments[info.object];
+            const Vec2f road = roadCoordinates(segment, out.position.x, out.position.z);
+            const uint32_t paint = roadPaintAt(segment, road.x, road.y);
+            out.uv = {segment.distance + road.x, road.y};
+            out.object = segment.object;
+            out.material = paint == kNoPaint ? info.material : segment.paint + paint - 1;
+        }
+        return out;
     }
 };
 

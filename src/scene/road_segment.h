@@ -21,6 +21,7 @@ enum RoadMarking : uint32_t {
     kMarkStopAtEnd = 1u << 6,     ///< ... at its end
     kMarkZebraAtStart = 1u << 7,  ///< zebra stripes of a crossing centred on the segment's start
     kMarkZebraAtEnd = 1u << 8,    ///< ... on its end
+    kMarkAmerican = 1u << 9,      ///< the MUTCD's layout: 3 m / 9 m dashes, a solid centre line doubled
 };
 
 struct RoadSegment {
@@ -31,7 +32,7 @@ struct RoadSegment {
     float halfWidth = 0;      ///< m, half the carriageway
     float centreOffset = 0;   ///< m across (left of `direction` positive) of the line between the directions
     uint8_t lanesForward = 1; ///< lanes in `direction`, right of the centre line
-    uint8_t lanesBackward = 1;///< lanes against it, left of the centre line
+    uint8_t lanesBackward = 1;///< lanes against it, left of the centre line; 0 on a one-way road (centreOffset = halfWidth)
     uint16_t spare = 0;
     uint32_t markings = 0;    ///< RoadMarking bits
     uint32_t object = 0;      ///< the road's object id (ID AOV)

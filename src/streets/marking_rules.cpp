@@ -2,7 +2,24 @@
 
 #include "scene/road_segment.h"
 
+#include <algorithm>
+
 namespace urbis {
+
+namespace {
+
+/// Whether road paint is laid on a surface: asphalt, concrete and (rarely, but mapped) paving stones.
+bool takesPaint(RoadSurface surface) {
+    switch (surface) {
+    case RoadSurface::Asphalt:
+    case RoadSurface::Concrete:
+    case RoadSurface::PavingStones:
+    case RoadSurface::Unknown: return true;   // the class's default: asphalt on every marked class
+    default: return false;
+    }
+}
+
+} // namespace
 
 bool isPaved(RoadSurface surface) {
     switch (surface) {
@@ -24,21 +41,21 @@ uint32_t markingBits(const Road& road, bool american) {
     case HighwayClass::Residential: break;
     default: return 0;
     }
-    if (!road.laneMarkings || !isPaved(road.surface) || road.surface == RoadSurface::Sett ||
-        road.surface == RoadSurface::Cobblestone)
-        return 0;
+    if (!road.laneMarkings || !takesPaint(road.surface)) return 0;
+    const bool highway = road.highway == HighwayClass::Motorway || road.highway == HighwayClass::Trunk;
+    // Lanes each way: as tagged, else half the lanes (the larger half forward).
+    const int forward = road.oneway ? road.lanes : road.lanesForward > 0 ? road.lanesForward : (road.lanes + 1) / 2;
+    const int backward = road.oneway ? 0 : road.lanesBackward > 0 ? road.lanesBackward : road.lanes / 2;
     uint32_t bits = 0;
-    const bool major = road.highway == HighwayClass::Motorway || road.highway == HighwayClass::Trunk ||
-                       road.highway == HighwayClass::Primary;
-    if (!road.oneway && road.lanes >= 2) {
+    if (!road.oneway && road.lanes >= 2 && road.width >= kCentreLineMinWidth) {
         bits |= kMarkCentreLine;
-        if (road.overtaking && !major) bits |= kMarkCentreDashed;
+        // No overtaking across a multi-lane road's centre line (RMS, MUTCD 3B.01) nor on a trunk.
+        if (road.overtaking && !highway && std::max(forward, backward) < 2) bits |= kMarkCentreDashed;
         if (american) bits |= kMarkCentreYellow;
     }
-    const int perDirection = road.oneway ? road.lanes : road.lanes / 2;
-    if (perDirection >= 2 || (road.oneway && road.lanes >= 2)) bits |= kMarkLaneDividers;
-    if (road.highway == HighwayClass::Motorway || road.highway == HighwayClass::Trunk) bits |= kMarkEdgeLines;
-    return bits;
+    if (std::max(forward, backward) >= 2) bits |= kMarkLaneDividers;
+    if (highway) bits |= kMarkEdgeLines;
+    return bits != 0 && american ? bits | kMarkAmerican : bits;
 }
 
 } // namespace urbis
