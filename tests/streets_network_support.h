@@ -9,6 +9,7 @@
 #include "streets/road_fitting.h"
 #include "streets/street_materials.h"
 #include "streets/street_network.h"
+#include "streets/street_network_plane.h"
 
 #include <algorithm>
 #include <cmath>

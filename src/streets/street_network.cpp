@@ -11,6 +11,7 @@
 #include "streets/street_network_plane.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <unordered_set>
 
@@ -78,6 +79,44 @@ TrimmedLine trimLine(const std::vector<Vec2d>& line, const std::vector<float>& e
     return out;
 }
 
+/// Ear clipping of a simple ring (either orientation; repeated points are dropped): triangles as
+/// index triples into `ring`, counter-clockwise. A ring that folds on itself leaves its rest
+/// untriangulated and counts it in `folded`.
+std::vector<std::array<size_t, 3>> triangulateRing(const std::vector<Vec2d>& ring, uint64_t& folded) {
+    std::vector<size_t> left;
+    for (size_t i = 0; i < ring.size(); ++i)
+        if (left.empty() || length(ring[i] - ring[left.back()]) > kMinSegment) left.push_back(i);
+    while (left.size() > 1 && length(ring[left.front()] - ring[left.back()]) <= kMinSegment) left.pop_back();
+    double area = 0;
+    for (size_t i = 0; i < left.size(); ++i) area += cross(ring[left[i]], ring[left[(i + 1) % left.size()]]);
+    if (area < 0) std::reverse(left.begin(), left.end());
+    std::vector<std::array<size_t, 3>> out;
+    const auto inTriangle = [&](Vec2d p, Vec2d a, Vec2d b, Vec2d c) {
+        return cross(b - a, p - a) > 0 && cross(c - b, p - b) > 0 && cross(a - c, p - c) > 0;
+    };
+    while (left.size() > 3) {
+        bool clipped = false;
+        for (size_t k = 0; k < left.size() && !clipped; ++k) {
+            const size_t ia = left[(k + left.size() - 1) % left.size()], ib = left[k], ic = left[(k + 1) % left.size()];
+            const Vec2d a = ring[ia], b = ring[ib], c = ring[ic];
+            if (!(cross(b - a, c - b) > kMinArea)) continue;
+            bool empty = true;
+            for (size_t m : left)
+                if (m != ia && m != ib && m != ic && inTriangle(ring[m], a, b, c)) empty = false;
+            if (!empty) continue;
+            out.push_back({ia, ib, ic});
+            left.erase(left.begin() + long(k));
+            clipped = true;
+        }
+        if (!clipped) {
+            ++folded;
+            return out;
+        }
+    }
+    if (left.size() == 3) out.push_back({left[0], left[1], left[2]});
+    return out;
+}
+
 Vec3f world(Vec2d p, float height) { return {float(p.x), height, float(-p.y)}; }
 
 class NetworkMesher {
@@ -94,7 +133,7 @@ public:
         const StreetJunctions shapes = shapeJunctions(roads_, elevations_);
         for (uint32_t r = 0; r < roads_.size(); ++r) {
             if (shapes.consumed[r]) {
-                ++out_.dropped[isPath(roads_[r].highway) ? "path_inside_carriageway" : "road_degenerate"];
+                ++out_.dropped[isPath(roads_[r].highway) ? "path_inside_carriageway" : "road_inside_junction"];
                 continue;
             }
             meshRoad(r, shapes.starts[r], shapes.ends[r]);
@@ -277,13 +316,8 @@ private:
         const char* kind = j.path ? "sidewalks" : "junctions";
         const TriangleInfo top = info(material, object, j.path ? SurfacePart::Sidewalk : SurfacePart::Junction);
         const float height = kRoadLevel + j.elevation;
-        for (size_t k = 0; k < j.ring.size(); ++k) {
-            const Vec2d a = j.ring[k], b = j.ring[(k + 1) % j.ring.size()];
-            const double area = cross(a - j.centre, b - j.centre);
-            if (area < 0) ++folded_;
-            if (!(area > kMinArea)) continue;
-            triangle(world(j.centre, height), world(a, height), world(b, height), top, kind);
-        }
+        for (const auto& [a, b, c] : triangulateRing(j.ring, folded_))
+            triangle(world(j.ring[a], height), world(j.ring[b], height), world(j.ring[c], height), top, kind);
         const TriangleInfo edge = info(material, object, SurfacePart::Curb);
         for (const std::vector<Vec2d>& side : j.bareSides)
             faces(side, std::vector<float>(side.size(), j.elevation), 0.0f, kRoadLevel, edge, kind);
