@@ -31,7 +31,7 @@ void probe(const Network& net, const FlatTriangles& flat, Vec2d p, Probe& out) {
     if (flat.covering(p, h.position.y) > 1) ++out.doubled;
 }
 
-/// Rays over junction j (0.2 m grid, 5 mm inside its border) and 1.5 m into each road's trimmed end.
+/// Rays over junction j (0.2 m grid, 5 mm inside its border) and 1 m into each road's trimmed end.
 Probe probeJunction(const Network& net, const FlatTriangles& flat, const JunctionShape& j) {
     Probe out;
     Vec2d lo{1e30, 1e30}, hi{-1e30, -1e30};
@@ -53,8 +53,9 @@ Probe probeJunction(const Network& net, const FlatTriangles& flat, const Junctio
             const double w = std::hypot(across.x, across.y);
             // Into the road: against its direction at its last point, along it at its first.
             const Vec2d into = atEnd ? Vec2d{-across.y / w, across.x / w} : Vec2d{across.y / w, -across.x / w};
-            for (double f = 0.05; f < 1.0; f += 0.1)
-                for (double g : {0.02, 0.5, 1.0, 1.5})
+            // Straight in across the trimmed end's middle: the road may bend away beyond.
+            for (double f = 0.15; f < 0.9; f += 0.1)
+                for (double g : {0.02, 0.5, 1.0})
                     probe(net, flat,
                           {e.right.x + across.x * f + into.x * g, e.right.y + across.y * f + into.y * g}, out);
         }
