@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <unordered_set>
 
 namespace urbis {
@@ -146,6 +147,7 @@ public:
         out_.counts["crossings"] += zebrasFound_.size();
         out_.objects += uint32_t(roads_.size());
         if (folded_ > 0) out_.dropped["junction_folded_triangle"] += folded_;
+        for (const auto& [kind, n] : trianglesOf_) out_.trianglesByKind[kind] += n;
     }
 
 private:
@@ -162,7 +164,7 @@ private:
         const Vec3f n = cross(b - a, c - a);
         if (!(dot(n, n) > kMinArea * kMinArea)) return;
         out_.mesh.add({a, b, c}, i);
-        ++out_.trianglesByKind[kind];
+        ++trianglesOf_[kind];
     }
     void quad(Vec3f a, Vec3f b, Vec3f c, Vec3f d, TriangleInfo i, const char* kind) {
         triangle(a, b, c, i, kind);
@@ -339,6 +341,7 @@ private:
     const uint32_t firstObject_;
     std::unordered_set<PointKey, PointKeyHash> zebras_, zebrasFound_;
     uint64_t roadsDrawn_ = 0, pathsDrawn_ = 0, folded_ = 0;
+    std::map<const char*, size_t> trianglesOf_;   ///< by kind: the kinds are string literals of this file
 };
 
 } // namespace
