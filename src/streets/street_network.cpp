@@ -146,7 +146,7 @@ public:
         out_.counts["junctions"] += shapes.junctions.size();
         out_.counts["crossings"] += zebrasFound_.size();
         out_.objects += uint32_t(roads_.size());
-        if (folded_ > 0) out_.dropped["junction_folded_triangle"] += folded_;
+        if (folded_ > 0) out_.dropped["junction_folded_ring"] += folded_;
         for (const auto& [kind, n] : trianglesOf_) out_.trianglesByKind[kind] += n;
     }
 
