@@ -48,10 +48,11 @@ inline Building roofed(Polygon footprint, RoofShape shape, float minHeight, floa
     return b;
 }
 
-/// Mesher options for closed mass models: plain walls instead of facades.
+/// Mesher options for closed mass models: plain walls instead of facades, and no streets.
 inline CityMeshOptions massModel() {
     CityMeshOptions options;
     options.geometry.walls = Representation::Plain;
+    options.streets = false;
     return options;
 }
 

@@ -68,6 +68,7 @@ void meshRailways(const CityModel& city, const StreetOptions& options, StreetMes
     }
     const std::vector<double> chainStart = chainOffsets(bridgeLines);
     const uint32_t material = options.firstMaterial;
+    const uint32_t firstObject = options.firstObject + out.objects;  // after the parts meshed before
     size_t triangles = 0;
     uint64_t meshed = 0;
     for (size_t i = 0; i < railways.size(); ++i) {
@@ -81,7 +82,7 @@ void meshRailways(const CityModel& city, const StreetOptions& options, StreetMes
             continue;
         }
         const std::vector<float>& e = elevations[i];
-        const uint32_t object = options.firstObject + uint32_t(city.roads.size() + i);
+        const uint32_t object = firstObject + uint32_t(i);
         const TriangleInfo concrete{material + uint32_t(StreetMaterial::BridgeConcrete), object,
                                     uint32_t(SurfacePart::BridgeDeck)};
         const TriangleInfo parapet{material + uint32_t(StreetMaterial::Parapet), object, uint32_t(SurfacePart::Parapet)};
@@ -113,7 +114,7 @@ void meshRailways(const CityModel& city, const StreetOptions& options, StreetMes
         }
         ++meshed;
     }
-    out.objects = std::max(out.objects, uint32_t(city.roads.size() + railways.size()));
+    out.objects += uint32_t(railways.size());
     out.counts["railways"] += meshed;
     out.trianglesByKind["railways"] += triangles;
 }

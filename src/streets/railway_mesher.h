@@ -19,7 +19,7 @@ inline constexpr double kBallastSlopeReach = 0.45;
 /// Meshes every railway of `city` drawn at the surface (not tunnel, covered, underground or layer < 0):
 /// ballast and rails at the gauge (rail centres gauge / 2 + kRailWidth / 2 off the centerline), or
 /// embedded strips for trams and `embedded` tracks; bridges at railwayElevations' heights on a deck.
-/// Object id: options.firstObject + city.roads.size() + the railway's index (out.objects covers them).
+/// Object ids: options.firstObject + out.objects (after the parts meshed before) + the railway's index.
 /// Adds `railways` to out.counts and their triangles to out.trianglesByKind["railways"].
 void meshRailways(const CityModel& city, const StreetOptions& options, StreetMesh& out);
 

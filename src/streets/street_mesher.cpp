@@ -4,12 +4,19 @@
 #include "streets/ground_cover.h"
 #include "streets/railway_mesher.h"
 #include "streets/road_elevation.h"
+#include "streets/road_fitting.h"
+#include "streets/street_network.h"
 
 namespace urbis {
 
 StreetMesh meshStreets(const CityModel& city, const StreetOptions& options) {
     StreetMesh out;
-    meshBridges(city.roads, roadElevations(city.roads), options, out);
+    // The roads first: their object ids are firstObject + the fitted road's index, which the
+    // bridges' structure shares; the other parts take theirs after out.objects.
+    const std::vector<Road> fitted = fitRoads(city, out.dropped);
+    const std::vector<std::vector<float>> elevations = roadElevations(fitted);
+    meshStreetNetwork(city, fitted, elevations, options, out);
+    meshBridges(fitted, elevations, options, out);
     meshRailways(city, options, out);
     meshGroundCover(city, options, out);
     return out;
