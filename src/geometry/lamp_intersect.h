@@ -1,6 +1,6 @@
 // Ray/street-lamp intersection (host+device): the ray is taken into lamp coordinates and moved along
 // itself to the point nearest the lamp, then each of the lamp's pieces (scene/lamp_pieces.h) is
-// solved analytically: truncated cones and spheres as quadrics, caps and boxes as planes. Moving the
+// solved analytically: truncated cones and spheres as quadrics, caps as planes. Moving the
 // origin first keeps the quadrics' coefficients at the lamp's scale: from a camera 1 km away,
 // |o|^2 rounds by more than a pole's radius squared (the cancellation "Precision Improvements for
 // Ray/Sphere Intersection", E. Haines et al., Ray Tracing Gems 2019, ch. 7, avoids the same way).
@@ -14,7 +14,7 @@
 namespace urbis {
 
 /// A hit on a lamp: distance, which piece and which of its faces (0 a frustum's side or the sphere,
-/// 1 the low cap, 2 the high cap; a box: the axis of its face).
+/// 1 the low cap, 2 the high cap).
 struct LampHit {
     float t = 0;
     uint32_t piece = 0, face = 0;
@@ -107,26 +107,6 @@ URBIS_HD inline bool intersectLampQuadric(const LampPiece& p, const LampRay& r, 
     return found;
 }
 
-/// Tests a solid box piece: its near face, or from inside the face it leaves through.
-URBIS_HD inline bool intersectLampBox(const LampPiece& p, const LampRay& r, float& tmax, uint32_t& face) {
-    float tNear = -3.0e38f, tFar = 3.0e38f;
-    uint32_t nearAxis = 0, farAxis = 0;
-    URBIS_NO_UNROLL
-    for (int a = 0; a < 3; ++a) {
-        const float t0 = exactMul(exactSub(p.a[a], r.o[a]), r.invD[a]), t1 = exactMul(exactSub(p.b[a], r.o[a]), r.invD[a]);
-        const float lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
-        if (lo > tNear) { tNear = lo; nearAxis = uint32_t(a); }
-        if (hi < tFar) { tFar = hi; farAxis = uint32_t(a); }
-    }
-    if (tNear > tFar) return false;
-    const bool inside = !(tNear > r.tmin);
-    const float t = inside ? tFar : tNear;
-    if (!(t > r.tmin && t < tmax)) return false;
-    tmax = t;
-    face = inside ? farAxis : nearAxis;
-    return true;
-}
-
 /// Whether `ray` meets the lamp with ray.tmin < t < ray.tmax: then the closest such hit (with
 /// anyHit, the first found).
 URBIS_HD inline bool intersectLamp(const LampRecord& lamp, const Ray& ray, LampHit& hit, bool anyHit) {
@@ -138,8 +118,7 @@ URBIS_HD inline bool intersectLamp(const LampRecord& lamp, const Ray& ray, LampH
         const LampPiece p = lampPiece(lamp, i);
         if (p.shape == LampPieceShape::None) continue;
         uint32_t face = 0;
-        if (!(p.shape == LampPieceShape::Box ? intersectLampBox(p, r, tmax, face) : intersectLampQuadric(p, r, tmax, face)))
-            continue;
+        if (!intersectLampQuadric(p, r, tmax, face)) continue;
         hit.piece = uint32_t(i);
         hit.face = face;
         found = true;
@@ -154,10 +133,6 @@ URBIS_HD inline bool intersectLamp(const LampRecord& lamp, const Ray& ray, LampH
 URBIS_HD inline Vec3f lampPieceNormal(const LampPiece& p, Vec3f q, uint32_t face) {
     Vec3f n;
     if (p.shape == LampPieceShape::Sphere) return normalize(q - p.a);
-    if (p.shape == LampPieceShape::Box) {
-        n[face] = q[face] - p.a[face] < p.b[face] - q[face] ? -1.0f : 1.0f;
-        return n;
-    }
     if (face != 0) {
         n[p.axis] = face == 1 ? -1.0f : 1.0f;
         return n;

@@ -18,7 +18,7 @@ struct KindIntersector<LampRecord> {
         return true;
     }
     /// uv: for a frustum, how far along its axis and the angle around it (turns, from the arm's
-    /// side); for the sphere, the height above its centre and the angle; for a box, lamp u and y.
+    /// side); for the sphere, the height above its centre and the angle.
     URBIS_HD static SurfaceHit surface(const SceneView&, uint32_t, const LampRecord& lamp, const PrimHit& hit,
                                        const Ray& ray) {
         const LampPiece piece = lampPiece(lamp, int(hit.axis / 4));
@@ -28,15 +28,12 @@ struct KindIntersector<LampRecord> {
         const Vec3f n = lampPieceNormal(piece, q, hit.axis % 4);
         const Vec3f normal = arm * n.x + Vec3f{0, n.y, 0} + side * n.z;
         // Around the piece's axis (the arm's for the arm, else up); across the arm on caps that face it.
-        const Vec3f axisDir = piece.shape == LampPieceShape::Frustum && piece.axis == 0 ? arm : Vec3f{0, 1, 0};
+        const Vec3f axisDir = piece.axis == 0 ? arm : Vec3f{0, 1, 0};
         const Vec3f around = cross(axisDir, normal);
         const Vec3f tangent = dot(around, around) > 1e-12f ? around : side;
         const Vec3f d = q - piece.a;
-        const int rx = piece.shape == LampPieceShape::Frustum && piece.axis == 0 ? 1 : 0;
-        const Vec2f uv = piece.shape == LampPieceShape::Box
-                             ? Vec2f{q.x, q.y}
-                             : Vec2f{d[piece.shape == LampPieceShape::Frustum ? piece.axis : 1],
-                                     atan2f(d.z, d[rx]) * (0.5f / kPi) + 0.5f};
+        const int rx = piece.axis == 0 ? 1 : 0;
+        const Vec2f uv{d[piece.axis], atan2f(d.z, d[rx]) * (0.5f / kPi) + 0.5f};
         const uint32_t material = lamp.material + uint32_t(piece.material);
         return {kNoPrimKind, hit.t, p, normal, tangent, uv, material, lamp.object, piece.part};
     }

@@ -1,6 +1,6 @@
 // The analytic pieces of a street lamp (host+device), in lamp coordinates (LampRecord): the pole, the
 // arm, the head's housing and its glass, each a truncated cone (a cylinder when both radii agree, a
-// disc when it has caps only), a sphere cut by a horizontal plane, or a box. The intersector tests
+// disc when it has caps only) or a sphere cut by a horizontal plane. The intersector tests
 // them, primBounds bounds them and the triangle twin tessellates them, all from this one layout, so
 // the two representations cannot drift apart. Proportions follow common street lamps: a cobra head
 // about 0.6 m long, a globe of 0.5 m, a lantern's glass widening upwards under a pointed roof.
@@ -11,7 +11,7 @@
 
 namespace urbis {
 
-enum class LampPieceShape : uint8_t { None, Frustum, Sphere, Box };
+enum class LampPieceShape : uint8_t { None, Frustum, Sphere };
 
 /// Which surfaces of a frustum exist: its side, the disc at its low end, the disc at its high end.
 enum LampFaces : uint8_t { kLampSide = 1, kLampCapLow = 2, kLampCapHigh = 4 };
@@ -20,7 +20,6 @@ enum LampFaces : uint8_t { kLampSide = 1, kLampCapLow = 2, kLampCapHigh = 4 };
 ///   Frustum: axis 0 (along u) or 1 (up); a = the centre of its low end; b = (length, radius at
 ///            the low end, slope: the radius's change per metre along the axis); faces: LampFaces.
 ///   Sphere:  a = the centre; b = (radius, lowest y kept, unused): open below that plane; faces kLampSide.
-///   Box:     a = the low corner, b = the high corner.
 /// What decides hits, so every multiply-add here is one of urbis.h's exact operations: nvcc would
 /// otherwise fuse `u + 0.5f * s` and place the device's pieces a rounding away from the host's.
 struct LampPiece {
@@ -47,7 +46,7 @@ URBIS_HD inline float lampArmRadius(const LampRecord& l) { return l.poleRadius >
 /// Height of the head's shape, in units of headSize.
 URBIS_HD inline float lampHeadHeight(LampShape s) {
     switch (s) {
-    case LampShape::Cobra: return 0.18f;
+    case LampShape::Cobra: return 0.3f;
     case LampShape::Globe: return 1.05f;
     case LampShape::Lantern: return 0.8f;
     case LampShape::Cone: return 0.3f;
@@ -66,10 +65,11 @@ URBIS_HD inline float lampHeadBottom(const LampRecord& l) {
 }
 
 /// A head piece in units of headSize about the head's centre (u = armLength) and bottom: the
-/// piece's a as an offset; b as an offset for a box, a frustum's (length, radius, slope) with the
-/// slope as it is, a sphere's (radius, cut above the bottom, unused).
+/// piece's a as an offset; b a frustum's (length, radius, slope) with the slope as it is, a sphere's
+/// (radius, cut above the bottom, unused).
 struct LampHeadLayout {
     LampPieceShape shape;
+    uint8_t axis;
     uint8_t faces;
     SurfacePart part;
     LampMaterial material;
@@ -79,27 +79,27 @@ struct LampHeadLayout {
 /// The head's housing (index 0) or glass (index 1) of each shape, as constants: one table-like
 /// switch and one scaling below keep the GPU's code small.
 URBIS_HD inline LampHeadLayout lampHeadLayout(LampShape shape, int index) {
-    constexpr LampPieceShape box = LampPieceShape::Box, frustum = LampPieceShape::Frustum;
+    constexpr LampPieceShape frustum = LampPieceShape::Frustum;
     constexpr SurfacePart head = SurfacePart::LampHead, glass = SurfacePart::LampGlass;
     constexpr LampMaterial housing = LampMaterial::Housing, pane = LampMaterial::Glass;
     constexpr uint8_t sideLow = kLampSide | kLampCapLow;
     const bool h = index == 0;
     switch (shape) {
-    case LampShape::Cobra:   // a flat housing box, its glass a shallow box under it
-        return h ? LampHeadLayout{box, 0, head, housing, {-0.45f, 0.0f, -0.18f}, {0.5f, 0.18f, 0.18f}}
-                 : LampHeadLayout{box, 0, glass, pane, {-0.35f, -0.03f, -0.13f}, {0.42f, 0.0f, 0.13f}};
+    case LampShape::Cobra:   // a housing along the arm, widening to its end, its glass a disc under it
+        return h ? LampHeadLayout{frustum, 0, sideLow | kLampCapHigh, head, housing, {-0.45f, 0.15f, 0}, {0.95f, 0.07f, 0.08f}}
+                 : LampHeadLayout{frustum, 1, kLampCapLow, glass, pane, {0.15f, 0.0f, 0}, {0.0f, 0.1f, 0.0f}};
     case LampShape::Globe:   // a collar, and a glass sphere cut where it sits on the collar
-        return h ? LampHeadLayout{frustum, sideLow, head, housing, {0, 0.0f, 0}, {0.1f, 0.25f, -0.2f}}
-                 : LampHeadLayout{LampPieceShape::Sphere, kLampSide, glass, pane, {0, 0.55f, 0}, {0.5f, 0.1f, 0}};
+        return h ? LampHeadLayout{frustum, 1, sideLow, head, housing, {0, 0.0f, 0}, {0.1f, 0.25f, -0.2f}}
+                 : LampHeadLayout{LampPieceShape::Sphere, 1, kLampSide, glass, pane, {0, 0.55f, 0}, {0.5f, 0.1f, 0}};
     case LampShape::Lantern: // glass widening upwards, under a pointed roof
-        return h ? LampHeadLayout{frustum, sideLow, head, housing, {0, 0.55f, 0}, {0.25f, 0.34f, -1.16f}}
-                 : LampHeadLayout{frustum, sideLow, glass, pane, {0, 0.0f, 0}, {0.55f, 0.16f, 0.18f}};
+        return h ? LampHeadLayout{frustum, 1, sideLow, head, housing, {0, 0.55f, 0}, {0.25f, 0.34f, -1.16f}}
+                 : LampHeadLayout{frustum, 1, sideLow, glass, pane, {0, 0.0f, 0}, {0.55f, 0.16f, 0.18f}};
     case LampShape::Cone:    // a conical shade, open below, its glass a disc inside the rim
-        return h ? LampHeadLayout{frustum, kLampSide | kLampCapHigh, head, housing, {0, 0.0f, 0}, {0.3f, 0.5f, -1.27f}}
-                 : LampHeadLayout{frustum, kLampCapLow, glass, pane, {0, 0.02f, 0}, {0.0f, 0.46f, 0.0f}};
+        return h ? LampHeadLayout{frustum, 1, kLampSide | kLampCapHigh, head, housing, {0, 0.0f, 0}, {0.3f, 0.5f, -1.27f}}
+                 : LampHeadLayout{frustum, 1, kLampCapLow, glass, pane, {0, 0.02f, 0}, {0.0f, 0.46f, 0.0f}};
     case LampShape::Flat:    // a flat round housing, its glass a disc just under it
-        return h ? LampHeadLayout{frustum, sideLow | kLampCapHigh, head, housing, {0, 0.0f, 0}, {0.08f, 0.5f, 0.0f}}
-                 : LampHeadLayout{frustum, kLampCapLow, glass, pane, {0, -0.02f, 0}, {0.0f, 0.42f, 0.0f}};
+        return h ? LampHeadLayout{frustum, 1, sideLow | kLampCapHigh, head, housing, {0, 0.0f, 0}, {0.08f, 0.5f, 0.0f}}
+                 : LampHeadLayout{frustum, 1, kLampCapLow, glass, pane, {0, -0.02f, 0}, {0.0f, 0.42f, 0.0f}};
     }
     return {};
 }
@@ -108,11 +108,10 @@ URBIS_HD inline LampHeadLayout lampHeadLayout(LampShape shape, int index) {
 URBIS_HD inline LampPiece lampHeadPiece(const LampRecord& l, int index) {
     const LampHeadLayout k = lampHeadLayout(l.shape, index);
     const float s = l.headSize, u = l.armLength, bottom = lampHeadBottom(l);
-    const bool isBox = k.shape == LampPieceShape::Box, isFrustum = k.shape == LampPieceShape::Frustum;
-    return {k.shape, uint8_t(isBox ? 0 : 1), k.faces, k.part, k.material,
+    const bool sphere = k.shape == LampPieceShape::Sphere;
+    return {k.shape, k.axis, k.faces, k.part, k.material,
             {exactMulAdd(s, k.a.x, u), exactMulAdd(s, k.a.y, bottom), exactMul(s, k.a.z)},
-            {exactMulAdd(s, k.b.x, isBox ? u : 0.0f), exactMulAdd(s, k.b.y, isFrustum ? 0.0f : bottom),
-             isFrustum ? k.b.z : exactMul(s, k.b.z)}};
+            {exactMul(s, k.b.x), exactMulAdd(s, k.b.y, sphere ? bottom : 0.0f), k.b.z}};
 }
 
 /// Piece `index` (0 .. kLampPieces - 1) of a lamp: 0 the pole (up to the arm's top or the head's

@@ -22,7 +22,6 @@ Bounds3f pieceBounds(const LampPiece& p) {
         const float r = p.b.x;
         return {{p.a.x - r, std::fmax(p.a.y - r, p.b.y), p.a.z - r}, p.a + Vec3f{r, r, r}};
     }
-    case LampPieceShape::Box: return {p.a, p.b};
     case LampPieceShape::None: break;
     }
     return {};

@@ -67,21 +67,6 @@ struct PieceMesher {
                 else quad(point(band, i), point(band, j), point(band + 1, j), point(band + 1, i));
             }
     }
-
-    void box() {
-        const Vec3f lo = piece.a, hi = piece.b;
-        for (int axis = 0; axis < 3; ++axis)
-            for (float side : {lo[axis], hi[axis]}) {
-                const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-                Vec3f c[4];
-                for (int k = 0; k < 4; ++k) {
-                    c[k][axis] = side;
-                    c[k][u] = (k == 1 || k == 2) ? hi[u] : lo[u];
-                    c[k][v] = k >= 2 ? hi[v] : lo[v];
-                }
-                quad(c[0], c[1], c[2], c[3]);
-            }
-    }
 };
 
 } // namespace
@@ -93,7 +78,6 @@ size_t meshLamp(const LampRecord& lamp, TriangleMesh& mesh) {
         PieceMesher m{lamp, piece, mesh};
         if (piece.shape == LampPieceShape::Frustum) m.frustum();
         else if (piece.shape == LampPieceShape::Sphere) m.sphere();
-        else if (piece.shape == LampPieceShape::Box) m.box();
         added += m.added;
     }
     return added;
