@@ -77,9 +77,10 @@ TEST(LampIntersect, GlassIsHitFromBelowAndTheGlobeFromAbove) {
         l.armLength = shape == LampShape::Cobra || shape == LampShape::Flat ? 1.5f : 0.0f;
         l.armX = 0.6f;
         l.armZ = 0.8f;
-        // Under the head's centre, beside the pole where the head is on it: straight up.
+        // Under the glass's centre, beside the pole where the head is on it: straight up.
         const float off = l.armLength > 0.0f ? 0.0f : 0.2f * l.headSize;
-        const Vec3f under = l.worldFromLamp({l.armLength, 1.0f, 0.0f}) + l.sideAxis() * off;
+        const LampPiece glass = lampPiece(l, 3);
+        const Vec3f under = l.worldFromLamp({glass.a.x, 1.0f, glass.a.z}) + l.sideAxis() * off;
         LampHit hit;
         ASSERT_TRUE(hitLamp(l, {under, {0.0f, 1.0f, 0.0f}}, hit)) << int(shape);
         EXPECT_EQ(lampPiece(l, int(hit.piece)).part, SurfacePart::LampGlass) << int(shape);
@@ -128,7 +129,7 @@ TEST(LampIntersect, SceneTraceReportsTheLampKindObjectPartAndMaterial) {
     EXPECT_EQ(pole.object, 8u);
     EXPECT_EQ(pole.part, SurfacePart::LampPole);
     EXPECT_EQ(pole.material, 20u + uint32_t(LampMaterial::Metal));
-    EXPECT_NEAR(pole.normal.z, -1.0f, 1e-5f);
+    EXPECT_NEAR(pole.normal.z, -1.0f, 1e-4f);   // the pole narrows: its normal tilts up a little
     EXPECT_NEAR(pole.uv.x, 1.0f, 1e-5f);   // metres up the pole
     EXPECT_NEAR(length(pole.frame().x), 1.0f, 1e-5f);
     const SurfaceHit glass = intersectScene(view, {{0.0f, 5.1f, -10.0f}, {0.0f, 0.0f, 1.0f}});

@@ -190,6 +190,7 @@ namespace {
 struct Extract {
     const char* name;
     std::string path;
+    size_t leastPlaced;   ///< the village has 280 m of residential streets, the rest tracks and driveways
 };
 
 void checkExtract(const Extract& e) {
@@ -206,7 +207,7 @@ void checkExtract(const Extract& e) {
     ASSERT_GE(lamps.size(), city.lamps.size());
     for (size_t i = 0; i < city.lamps.size(); ++i) EXPECT_EQ(lamps[i].osmId, city.lamps[i].osmId);
     const std::vector<Lamp> placed = placedOnly(lamps, city.lamps.size());
-    EXPECT_GT(placed.size(), 10u) << e.name;
+    EXPECT_GE(placed.size(), e.leastPlaced) << e.name;
     expectClear(city, roads, placed);
     EXPECT_TRUE(sameLamps(lamps, streetLamps(city, roads))) << "deterministic";
     std::printf("%s: %zu mapped, %zu placed lamps along %zu roads\n", e.name, city.lamps.size(), placed.size(), roads.size());
@@ -215,9 +216,9 @@ void checkExtract(const Extract& e) {
 } // namespace
 
 TEST(LampPlacement, RealVillageLampsAreClear) {
-    checkExtract({"village", URBIS_OSMNX_DATA "/planet_10.068,48.135_10.071,48.137.osm"});
+    checkExtract({"village", URBIS_OSMNX_DATA "/planet_10.068,48.135_10.071,48.137.osm", 6});
 }
-TEST(LampPlacement, RealWestOaklandLampsAreClear) { checkExtract({"West Oakland", URBIS_OSMNX_DATA "/West-Oakland.osm.bz2"}); }
+TEST(LampPlacement, RealWestOaklandLampsAreClear) { checkExtract({"West Oakland", URBIS_OSMNX_DATA "/West-Oakland.osm.bz2", 40}); }
 TEST(LampPlacement, RealSanFranciscoLampsAreClear) {
-    checkExtract({"San Francisco", URBIS_SHARED_DATA "/sf_downtown_2023.osm.pbf"});
+    checkExtract({"San Francisco", URBIS_SHARED_DATA "/sf_downtown_2023.osm.pbf", 3000});
 }

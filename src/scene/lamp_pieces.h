@@ -55,12 +55,12 @@ URBIS_HD inline float lampHeadHeight(LampShape s) {
     return 0.0f;
 }
 
-/// y of the head's bottom: on the pole's top for a post-top lamp; on an arm, cobra and flat heads
-/// are centred on the arm's axis and the others hang below it.
+/// y of the head's bottom: on the pole's top for a post-top lamp; on an arm, a cobra head is
+/// centred on the arm's axis and the others hang below it.
 URBIS_HD inline float lampHeadBottom(const LampRecord& l) {
     const float headHeight = exactMul(lampHeadHeight(l.shape), l.headSize);
     if (l.armLength <= 0.0f) return l.height;
-    if (l.shape == LampShape::Cobra || l.shape == LampShape::Flat) return exactMulAdd(-0.5f, headHeight, l.height);
+    if (l.shape == LampShape::Cobra) return exactMulAdd(-0.5f, headHeight, l.height);
     return exactSub(exactSub(l.height, lampArmRadius(l)), headHeight);
 }
 
@@ -86,7 +86,7 @@ URBIS_HD inline LampHeadLayout lampHeadLayout(LampShape shape, int index) {
     const bool h = index == 0;
     switch (shape) {
     case LampShape::Cobra:   // a housing along the arm, widening to its end, its glass a disc under it
-        return h ? LampHeadLayout{frustum, 0, sideLow | kLampCapHigh, head, housing, {-0.45f, 0.15f, 0}, {0.95f, 0.07f, 0.08f}}
+        return h ? LampHeadLayout{frustum, 0, sideLow | kLampCapHigh, head, housing, {-0.45f, 0.15f, 0}, {0.95f, 0.1f, 0.05f}}
                  : LampHeadLayout{frustum, 1, kLampCapLow, glass, pane, {0.15f, 0.0f, 0}, {0.0f, 0.1f, 0.0f}};
     case LampShape::Globe:   // a collar, and a glass sphere cut where it sits on the collar
         return h ? LampHeadLayout{frustum, 1, sideLow, head, housing, {0, 0.0f, 0}, {0.1f, 0.25f, -0.2f}}

@@ -199,11 +199,13 @@ private:
 };
 
 /// One row of lamps along a road: which side (+1 left, -1 right, 0 the centre line), how far from
-/// the centerline, and where along it the first lamp stands.
+/// the centerline, where along it the first lamp stands, and for a single row the other side's
+/// offset, tried where a station is blocked (0: none).
 struct LampRow {
     int side;
     double offset;
     double phase;
+    double otherOffset = 0.0;
 };
 
 std::vector<LampRow> rowsOf(const Road& road, double spacing) {
@@ -213,7 +215,7 @@ std::vector<LampRow> rowsOf(const Road& road, double spacing) {
     if (road.width > kMedianRoad && !road.oneway) return {{0, 0.0, 0.5 * spacing}};
     if (road.width >= kWideRoad) return {{-1, right, 0.5 * spacing}, {1, left, spacing}};
     const bool leftOnly = road.sidewalkLeftWidth > 0.0f && !(road.sidewalkRightWidth > 0.0f);
-    return {leftOnly ? LampRow{1, left, 0.5 * spacing} : LampRow{-1, right, 0.5 * spacing}};
+    return {leftOnly ? LampRow{1, left, 0.5 * spacing, right} : LampRow{-1, right, 0.5 * spacing, left}};
 }
 
 } // namespace
@@ -275,12 +277,20 @@ std::vector<Lamp> streetLamps(const CityModel& city, const std::vector<Road>& ro
                 if (n.x == 0.0 && n.y == 0.0) continue;
                 const double f = std::clamp((s - segmentStart) / distance(a, b), 0.0, 1.0);
                 const Vec2d centre{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
-                const Vec2d p{centre.x + n.x * row.side * row.offset, centre.y + n.y * row.side * row.offset};
+                auto clear = [&](Vec2d p) {
+                    return !junctions.near(p) && !footprints.near(p) &&
+                           !roadIndex.blocked(p, row.side == 0 ? int64_t(r) : -1) &&
+                           !mapped.near(p, kMappedReach * style.spacing) && !placed.near(p, kPlacedSpacing * style.spacing);
+                };
+                int side = row.side;
+                Vec2d p{centre.x + n.x * side * row.offset, centre.y + n.y * side * row.offset};
+                if (!clear(p) && row.otherOffset > 0.0) {
+                    side = -side;
+                    p = {centre.x + n.x * side * row.otherOffset, centre.y + n.y * side * row.otherOffset};
+                }
+                if (!clear(p)) continue;
                 // The head leans to the road; on a median, to each carriageway in turn.
-                const double lean = row.side != 0 ? -row.side : (count++ % 2 == 0 ? -1.0 : 1.0);
-                if (junctions.near(p) || footprints.near(p) || roadIndex.blocked(p, row.side == 0 ? int64_t(r) : -1) ||
-                    mapped.near(p, kMappedReach * style.spacing) || placed.near(p, kPlacedSpacing * style.spacing))
-                    continue;
+                const double lean = side != 0 ? -side : (count++ % 2 == 0 ? -1.0 : 1.0);
                 Lamp lamp;
                 lamp.position = p;
                 lamp.height = style.height;

@@ -27,7 +27,8 @@ LampStyle lampStyle(HighwayClass highway);
 /// Every lamp of `city.lamps` (a head leaning nowhere, direction -1, turned to the nearest road),
 /// then lamps placed along `roads` (the fitted roads: width and sidewalk widths as given, 0 = no
 /// sidewalk that side) where no mapped lamp stands within half a spacing: one row on the side with a
-/// sidewalk (or the right) below 10 m of carriageway, two staggered rows from 10 m, one row on the
+/// sidewalk (or the right; a blocked station tries the other side) below 10 m of carriageway, two
+/// staggered rows from 10 m, one row on the
 /// centre line of a two-way road wider than 20 m (a dual carriageway drawn as one way), each 0.5 m
 /// from the curb onto the sidewalk, or 0.5 m beyond the edge where there is none. A position is left
 /// out within 0.5 m of a building footprint, on any carriageway (within its half width + 0.2 m of a
