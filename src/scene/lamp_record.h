@@ -36,7 +36,7 @@ struct LampRecord {
 
     /// Cost of testing one, in triangles, for the surface area heuristic: above one, so each lamp
     /// has a leaf of its own (leaves hold one kind), which the GPU tests deferred like a wall's.
-    /// A lamp is up to four quadrics or boxes; docs/streets.md has the measurements.
+    /// A lamp is up to four quadrics with their caps; docs/streets.md has the measurements.
     static constexpr uint32_t kBvhCost = 4;
 
     URBIS_HD Vec3f armAxis() const { return {armX, 0.0f, armZ}; }
