@@ -5,6 +5,7 @@
 // decides.
 #include "accel/bvh_build.h"
 #include "citygen/city_mesher.h"
+#include "citygen/city_scene.h"
 #include "geometry/scene_intersect.h"
 #include "layout/city_layout.h"
 #include "math/rng.h"
@@ -44,7 +45,7 @@ TEST(AccelDeferredWalls, GeneratedCityHitsAreTheSameDeferredOrNot) {
     params.buildings = 200;
     params.seed = 11;
     const CityMesh mesh = meshCity(generateCity(params));
-    const Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls);
+    const Scene scene = buildCityScene(mesh);
     ASSERT_GT(scene.walls.size(), 500u);
     const SceneView view = scene.view();
     const Bounds3f b = mesh.cityBounds;

@@ -2,6 +2,7 @@
 // >= 99.9 % of pixels (ID AOV) and the same image within a stated tolerance, on a real village and
 // on a generated city.
 #include "citygen/city_mesher.h"
+#include "citygen/city_scene.h"
 #include "cpu/cpu_renderer.h"
 #include "integrators/aov_sample.h"
 #include "layout/city_layout.h"
@@ -20,8 +21,7 @@ Scene sceneOf(const CityModel& city, Representation walls, Bounds3f& bounds) {
     options.geometry.walls = walls;
     CityMesh mesh = meshCity(city, options);
     bounds = mesh.cityBounds;
-    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, {},
-                               {GroundRecord::around(0.0f, 0.0f, 0.0f, mesh.groundMaterial)});
+    Scene scene = buildCityScene(mesh);
     scene.sun = makeSun(35.0f, 200.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     return scene;
 }

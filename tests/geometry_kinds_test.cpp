@@ -54,12 +54,14 @@ void expectUnitFrame(const SurfaceHit& h) {
 } // namespace
 
 TEST(PrimKinds, ListIndicesAndCosts) {
-    EXPECT_EQ(kPrimKindCount, 3u);
+    EXPECT_EQ(kPrimKindCount, 4u);
     EXPECT_EQ(kPrimKindOf<Triangle>, 0u);
     EXPECT_EQ(kPrimKindOf<WallRecord>, 1u);
     EXPECT_EQ(kPrimKindOf<GroundRecord>, 2u);
+    EXPECT_EQ(kPrimKindOf<LampRecord>, 3u);
     EXPECT_FALSE(kCostlyKind<kPrimKindOf<Triangle>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<WallRecord>>);
+    EXPECT_TRUE(kCostlyKind<kPrimKindOf<LampRecord>>);
     EXPECT_TRUE(kKindAtBvhRoot<kPrimKindOf<GroundRecord>>);
     EXPECT_FALSE(kKindAtBvhRoot<kPrimKindOf<WallRecord>>);
 }

@@ -2,6 +2,7 @@
 #include "gpu_test_support.h"
 
 #include "citygen/city_mesher.h"
+#include "citygen/city_scene.h"
 #include "cpu/cpu_renderer.h"
 #include "osm/osm_import.h"
 #include "scene/camera_framing.h"
@@ -28,8 +29,7 @@ void expectVillageImagesMatch(const std::string& geometry) {
     CityMeshOptions options;
     options.geometry = parseGeometryModes(geometry);
     CityMesh mesh = meshCity(city, options);
-    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, {},
-                               {GroundRecord::around(0.0f, 0.0f, 0.0f, mesh.groundMaterial)});
+    Scene scene = buildCityScene(mesh);
     ASSERT_EQ(!scene.walls.empty(), geometry == "procedural");
     scene.sun = makeSun(35.0f, 140.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     RenderSettings settings;

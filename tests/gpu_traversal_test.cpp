@@ -3,6 +3,7 @@
 #include "gpu_test_support.h"
 
 #include "citygen/city_mesher.h"
+#include "citygen/city_scene.h"
 #include "math/rng.h"
 #include "math/sampling.h"
 #include "osm/osm_import.h"
@@ -32,8 +33,7 @@ std::vector<Ray> randomRays(const Bounds3f& b, uint32_t count, uint32_t seed) {
 void expectSameHitsOnGpuAndCpu(const std::string& osmFile, uint32_t count) {
     CityModel city = importOsm(osmFile, ImportOptions{});
     CityMesh mesh = meshCity(city);
-    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, {},
-                               {GroundRecord::around(0.0f, 0.0f, 0.0f, mesh.groundMaterial)});
+    Scene scene = buildCityScene(mesh);
     ASSERT_GT(scene.triangles.size(), 200u);  // the village: 284 roof and plain-wall triangles, SF 100,000s
     ASSERT_GT(scene.walls.size(), 50u);
     std::vector<Ray> rays = randomRays(mesh.cityBounds, count, 4242u);

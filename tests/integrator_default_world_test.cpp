@@ -4,6 +4,7 @@
 // changes the noise, not the mean. Tolerances: the image mean within 1 %, and each of 6 x 6
 // blocks within 5 % (measured: 0.05 % and 1.5 % at 96 x 54 pixels, 128 spp).
 #include "citygen/city_mesher.h"
+#include "citygen/city_scene.h"
 #include "cpu/cpu_renderer.h"
 #include "layout/city_layout.h"
 #include "lights/light_build.h"
@@ -23,7 +24,7 @@ struct World {
 World defaultWorld(float aspect) {
     const CityModel city = generateCity(LayoutParams{});
     CityMesh mesh = meshCity(city, CityMeshOptions{});
-    World w{Scene::build(mesh.mesh, mesh.materials, mesh.walls, {}, {GroundRecord::around(0.0f, 0.0f, 0.0f, mesh.groundMaterial)}),
+    World w{buildCityScene(mesh),
             frameCity(mesh.framingPieces, 50.0f, aspect)};
     w.scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     return w;

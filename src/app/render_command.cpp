@@ -7,6 +7,7 @@
 #include "app/output_paths.h"
 #include "app/render_device.h"
 #include "citygen/city_mesher.h"
+#include "citygen/city_scene.h"
 #include "cpu/cpu_renderer.h"
 #include "description/scene_checks.h"
 #include "description/scene_json.h"
@@ -132,9 +133,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
 
     auto t0 = Clock::now();
     const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
-    p.scene = Scene::build(mesh.mesh, std::move(mesh.materials), mesh.walls, *wallTileSizeOf(d.geometry.wallTiles),
-                           {GroundRecord::around(centre.x, centre.z, 0.0f, mesh.groundMaterial)});
-    p.scene.roadSegments = std::move(mesh.roadSegments);
+    p.scene = buildCityScene(mesh, *wallTileSizeOf(d.geometry.wallTiles), centre);
     p.scene.sun = sunOf(d.sun);
     p.scene.sky = skyOf(d.sky);
     buildLights(p.scene);

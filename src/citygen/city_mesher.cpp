@@ -155,6 +155,7 @@ void addStreets(const CityModel& city, const CityMeshOptions& options, CityMesh&
     StreetMesh streets = meshStreets(city, streetOptions);
     out.mesh.append(streets.mesh);
     out.roadSegments = std::move(streets.roadSegments);
+    out.lamps = std::move(streets.lamps);
     for (const auto& [kind, n] : streets.trianglesByKind) out.trianglesByKind[kind] += n;
     for (const auto& [reason, n] : streets.dropped) out.dropped[reason] += n;
     out.streetCounts = std::move(streets.counts);

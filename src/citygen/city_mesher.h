@@ -9,6 +9,7 @@
 #include "model/city_model.h"
 #include "scene/geometry_modes.h"
 #include "scene/material.h"
+#include "scene/lamp_record.h"
 #include "scene/road_segment.h"
 
 #include <map>
@@ -36,6 +37,7 @@ struct CityMesh {
     TriangleMesh mesh;
     std::vector<WallRecord> walls;             ///< procedural walls (empty with walls=triangles)
     std::vector<RoadSegment> roadSegments;     ///< the carriageways' markings (streets/street_mesh.h)
+    std::vector<LampRecord> lamps;             ///< procedural street lamps (empty with lamps=triangles)
     std::vector<Material> materials;
     uint32_t groundMaterial = 0;               ///< the ground plane's entry in materials
     Bounds3f cityBounds;                       ///< world bounds of the buildings (ground and streets excluded)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "geometry/ground_intersect.h"
+#include "geometry/lamp_kind.h"
 #include "geometry/triangle_kind.h"
 #include "geometry/wall_kind.h"
 

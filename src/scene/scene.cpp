@@ -7,10 +7,11 @@
 namespace urbis {
 
 Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, const std::vector<WallRecord>& wholeWalls,
-                   WallTileSize tileSize, const std::vector<GroundRecord>& grounds) {
+                   WallTileSize tileSize, const std::vector<GroundRecord>& grounds,
+                   const std::vector<LampRecord>& lamps) {
     const std::vector<WallRecord> walls = splitWallsIntoTiles(wholeWalls, tileSize);
     // Each kind's records in input order, as PrimKinds lists them.
-    const auto inputs = std::tie(mesh.triangles, walls, grounds);
+    const auto inputs = std::tie(mesh.triangles, walls, grounds, lamps);
     static_assert(std::tuple_size_v<decltype(inputs)> == kPrimKindCount, "an input per kind of PrimKinds");
     // Kind k's record i is primitive first[k] + i, and its leaf slot lies in [first[k], first[k + 1]).
     uint32_t first[kPrimKindCount + 1] = {};
@@ -54,6 +55,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
     scene.triangleInfo.reserve(mesh.size());
     scene.walls.reserve(walls.size());
     scene.grounds.reserve(grounds.size());
+    scene.lamps.reserve(lamps.size());
     auto kindOf = [&](uint32_t prim) {
         uint32_t k = 0;
         while (prim >= first[k + 1]) ++k;

@@ -42,11 +42,12 @@ struct Scene {
     LightListInfo lights;   ///< beside the light arrays, which buildLights (lights/light_build.h) fills from the rest
 
     /// Builds one BVH over the triangles of `mesh`, the tiles of the procedural `walls`
-    /// (splitWallsIntoTiles) and the `grounds` (hung from its root), and stores each kind's records
-    /// in leaf order, the slots of each kind after those of the kinds before it (SceneView::kindEnd).
+    /// (splitWallsIntoTiles), the `grounds` (hung from its root) and the analytic street `lamps`,
+    /// and stores each kind's records in leaf order, the slots of each kind after those of the kinds
+    /// before it (SceneView::kindEnd).
     static Scene build(const TriangleMesh& mesh, std::vector<Material> materials,
                        const std::vector<WallRecord>& walls = {}, WallTileSize tileSize = {},
-                       const std::vector<GroundRecord>& grounds = {});
+                       const std::vector<GroundRecord>& grounds = {}, const std::vector<LampRecord>& lamps = {});
     SceneView view() const;
     SceneMemory memory() const;
 };

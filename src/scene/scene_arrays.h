@@ -18,6 +18,7 @@
     X(TriangleInfo, triangleInfo, "triangle_info")     \
     X(WallRecord, walls, "walls")                      \
     X(GroundRecord, grounds, "grounds")                \
+    X(LampRecord, lamps, "lamps")                      \
     X(Material, materials, "materials")                \
     X(RoadSegment, roadSegments, "road_segments")      \
     X(LightRecord, lightRecords, "light_records")      \
@@ -44,9 +45,10 @@ template <typename Record>
 URBIS_HD auto& kindArray(auto& arrays) {
     if constexpr (std::is_same_v<Record, Triangle>) return arrays.triangles;
     else if constexpr (std::is_same_v<Record, WallRecord>) return arrays.walls;
+    else if constexpr (std::is_same_v<Record, GroundRecord>) return arrays.grounds;
     else {
-        static_assert(std::is_same_v<Record, GroundRecord>, "a kind of PrimKinds without its array here");
-        return arrays.grounds;
+        static_assert(std::is_same_v<Record, LampRecord>, "a kind of PrimKinds without its array here");
+        return arrays.lamps;
     }
 }
 

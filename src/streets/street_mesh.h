@@ -5,6 +5,7 @@
 
 #include "model/city_model.h"
 #include "scene/geometry_modes.h"
+#include "scene/lamp_record.h"
 #include "scene/road_segment.h"
 #include "scene/triangle_mesh.h"
 
@@ -25,6 +26,7 @@ struct StreetOptions {
 struct StreetMesh {
     TriangleMesh mesh;                          ///< every stored street triangle
     std::vector<RoadSegment> roadSegments;      ///< a Road triangle's TriangleInfo::object indexes these
+    std::vector<LampRecord> lamps;              ///< analytic street lamps (StreetOptions::lamps == Procedural)
     /// What was made, keyed roads, junctions, sidewalks, crossings, ground_cover, water, bridges,
     /// railways, lamps (for --stats `counts`).
     std::map<std::string, uint64_t> counts;

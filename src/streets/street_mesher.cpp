@@ -2,9 +2,11 @@
 
 #include "streets/bridge_mesher.h"
 #include "streets/ground_cover.h"
+#include "streets/lamp_placement.h"
 #include "streets/railway_mesher.h"
 #include "streets/road_elevation.h"
 #include "streets/road_fitting.h"
+#include "streets/street_lamps.h"
 #include "streets/street_network.h"
 
 namespace urbis {
@@ -19,6 +21,7 @@ StreetMesh meshStreets(const CityModel& city, const StreetOptions& options) {
     meshBridges(fitted, elevations, options, out);
     meshRailways(city, options, out);
     meshGroundCover(city, options, out);
+    addLamps(streetLamps(city, fitted), options, out);
     return out;
 }
 

@@ -1,0 +1,12 @@
+#include "citygen/city_scene.h"
+
+namespace urbis {
+
+Scene buildCityScene(const CityMesh& mesh, WallTileSize tileSize, Vec3f groundCentre) {
+    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, tileSize,
+                               {GroundRecord::around(groundCentre.x, groundCentre.z, 0.0f, mesh.groundMaterial)}, mesh.lamps);
+    scene.roadSegments = mesh.roadSegments;
+    return scene;
+}
+
+} // namespace urbis

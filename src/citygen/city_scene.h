@@ -1,0 +1,14 @@
+// A meshed city as a scene: every array a CityMesh carries goes to Scene::build in one place, so no
+// caller forgets the streets' road segments or lamps.
+#pragma once
+
+#include "citygen/city_mesher.h"
+#include "scene/scene.h"
+
+namespace urbis {
+
+/// The scene of `mesh`: its triangles, walls (split into `tileSize` tiles), road segments and lamps,
+/// on the ground plane around `groundCentre` (world x, z).
+Scene buildCityScene(const CityMesh& mesh, WallTileSize tileSize = {}, Vec3f groundCentre = {});
+
+} // namespace urbis
