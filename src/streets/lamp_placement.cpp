@@ -21,7 +21,6 @@ constexpr double kPathClearance = 0.5;       // m from a footway's or path's cen
 constexpr double kBuildingClearance = 0.5;   // m from a footprint's outline
 constexpr double kJunctionRadius = 8.0;      // m around a junction node, at least
 constexpr double kWideRoad = 10.0;           // m of carriageway from which both sides are lit
-constexpr double kMedianRoad = 20.0;         // m of a two-way carriageway lit from its middle
 constexpr double kPlacedSpacing = 0.4;       // of a spacing: the least distance between placed lamps
 constexpr double kMappedReach = 0.5;         // of a spacing: a mapped lamp this near stands for a placed one
 constexpr double kTurnReach = 30.0;          // m within which a mapped lamp turns to a road
@@ -72,13 +71,12 @@ public:
         }
     }
 
-    /// Whether p lies on a carriageway (within its half width + margin), or near a path's centerline;
-    /// a carriageway's own centre (road `median`) does not count.
-    bool blocked(Vec2d p, int64_t median = -1) const {
+    /// Whether p lies on a carriageway (within its half width + margin), or near a path's centerline.
+    bool blocked(Vec2d p) const {
         bool hit = false;
         grid_.query({p, p}, [&](uint32_t s) {
             const auto [r, i] = segments_[s];
-            if (hit || int64_t(r) == median) return;
+            if (hit) return;
             const auto& line = roads_[r].centerline;
             hit = distance(p, nearestOnSegment(p, line[i], line[i + 1])) < reachOf(roads_[r]);
         });
@@ -212,7 +210,6 @@ std::vector<LampRow> rowsOf(const Road& road, double spacing) {
     const double half = 0.5 * road.width;
     auto offset = [&](float sidewalk) { return half + (sidewalk > 0.0f ? std::min(kCurbSetback, 0.5 * sidewalk) : kCurbSetback); };
     const double left = offset(road.sidewalkLeftWidth), right = offset(road.sidewalkRightWidth);
-    if (road.width > kMedianRoad && !road.oneway) return {{0, 0.0, 0.5 * spacing}};
     if (road.width >= kWideRoad) return {{-1, right, 0.5 * spacing}, {1, left, spacing}};
     const bool leftOnly = road.sidewalkLeftWidth > 0.0f && !(road.sidewalkRightWidth > 0.0f);
     return {leftOnly ? LampRow{1, left, 0.5 * spacing, right} : LampRow{-1, right, 0.5 * spacing, left}};
@@ -265,7 +262,6 @@ std::vector<Lamp> streetLamps(const CityModel& city, const std::vector<Road>& ro
         for (const LampRow& row : rowsOf(road, style.spacing)) {
             size_t segment = 0;
             double segmentStart = 0.0;
-            int count = 0;
             for (double s = row.phase; s < length; s += style.spacing) {
                 // The segment holding station s (zero-length segments are passed over).
                 while (segment + 2 < line.size() && segmentStart + distance(line[segment], line[segment + 1]) < s) {
@@ -279,7 +275,7 @@ std::vector<Lamp> streetLamps(const CityModel& city, const std::vector<Road>& ro
                 const Vec2d centre{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
                 auto clear = [&](Vec2d p) {
                     return !junctions.near(p) && !footprints.near(p) &&
-                           !roadIndex.blocked(p, row.side == 0 ? int64_t(r) : -1) &&
+                           !roadIndex.blocked(p) &&
                            !mapped.near(p, kMappedReach * style.spacing) && !placed.near(p, kPlacedSpacing * style.spacing);
                 };
                 int side = row.side;
@@ -289,8 +285,8 @@ std::vector<Lamp> streetLamps(const CityModel& city, const std::vector<Road>& ro
                     p = {centre.x + n.x * side * row.otherOffset, centre.y + n.y * side * row.otherOffset};
                 }
                 if (!clear(p)) continue;
-                // The head leans to the road; on a median, to each carriageway in turn.
-                const double lean = side != 0 ? -side : (count++ % 2 == 0 ? -1.0 : 1.0);
+                // The head leans to the road.
+                const double lean = -side;
                 Lamp lamp;
                 lamp.position = p;
                 lamp.height = style.height;

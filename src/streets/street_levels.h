@@ -11,6 +11,8 @@ inline constexpr float kCoverStep = 0.004f;
 inline constexpr float kWaterLevel = 0.08f;
 /// Paved pedestrian areas and squares.
 inline constexpr float kPavedAreaLevel = 0.10f;
+/// Footways, paths and cycleways, under the carriageways they cross without a shared node.
+inline constexpr float kPathLevel = 0.11f;
 /// Carriageways and junctions (one plane: they meet edge to edge and never overlap).
 inline constexpr float kRoadLevel = 0.12f;
 /// A sidewalk's top: the carriageway plus the curb.

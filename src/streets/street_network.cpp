@@ -173,9 +173,13 @@ private:
     /// Upright faces along a chain of plan points, from `bottom` to `top` above each point's elevation.
     void faces(const std::vector<Vec2d>& chain, const std::vector<float>& elevation, float bottom, float top,
                TriangleInfo i, const char* kind) {
-        for (size_t k = 0; k + 1 < chain.size(); ++k)
+        for (size_t k = 0; k + 1 < chain.size(); ++k) {
+            // Down to the ground only where the street lies on it: under lifted parts the bridges'
+            // structure stands (deck sides, embankment walls), in the same planes.
+            if (bottom == 0.0f && (elevation[k] > 0.0f || elevation[k + 1] > 0.0f)) continue;
             quad(world(chain[k], elevation[k] + bottom), world(chain[k + 1], elevation[k + 1] + bottom),
                  world(chain[k + 1], elevation[k + 1] + top), world(chain[k], elevation[k] + top), i, kind);
+        }
     }
     /// A flat strip between two chains of plan points at `height`, zipped along the shorter diagonals.
     void strip(const std::vector<Vec2d>& a, const std::vector<Vec2d>& b, float height, TriangleInfo i, const char* kind) {
@@ -213,6 +217,7 @@ private:
         const uint32_t object = firstObject_ + r;
         const StreetMaterial material = surfaceMaterial(road);
         const char* kind = path ? "sidewalks" : "roads";
+        const float level = path ? kPathLevel : kRoadLevel;
         (path ? pathsDrawn_ : roadsDrawn_) += 1;
 
         const uint32_t baseMarkings = path ? 0 : markingBits(road, options_.americanMarkings);
@@ -225,19 +230,19 @@ private:
                 out_.roadSegments.push_back(segment(road, object, a, b, line.distance[k], baseMarkings,
                                                     k == 0 && start.atJunction, k == last && end.atJunction));
             }
-            const float ea = kRoadLevel + line.elevation[k], eb = kRoadLevel + line.elevation[k + 1];
+            const float ea = level + line.elevation[k], eb = level + line.elevation[k + 1];
             quad(world(right[k], ea), world(right[k + 1], eb), world(left[k + 1], eb), world(left[k], ea), i, kind);
         }
         // Where no sidewalk rises beside it, the carriageway's edge comes down to the ground.
         const TriangleInfo edge = info(material, object, SurfacePart::Curb);
-        if (road.sidewalkLeftWidth <= 0) faces(left, line.elevation, 0.0f, kRoadLevel, edge, kind);
+        if (road.sidewalkLeftWidth <= 0) faces(left, line.elevation, 0.0f, level, edge, kind);
         if (road.sidewalkRightWidth <= 0) faces(std::vector<Vec2d>(right.rbegin(), right.rend()),
                                                 std::vector<float>(line.elevation.rbegin(), line.elevation.rend()),
-                                                0.0f, kRoadLevel, edge, kind);
+                                                0.0f, level, edge, kind);
         const std::vector<float> startLevel{line.elevation.front(), line.elevation.front()};
         const std::vector<float> endLevel{line.elevation.back(), line.elevation.back()};
-        if (start.deadEnd) faces({start.left, start.right}, startLevel, 0.0f, kRoadLevel, edge, kind);
-        if (end.deadEnd) faces({end.right, end.left}, endLevel, 0.0f, kRoadLevel, edge, kind);
+        if (start.deadEnd) faces({start.left, start.right}, startLevel, 0.0f, level, edge, kind);
+        if (end.deadEnd) faces({end.right, end.left}, endLevel, 0.0f, level, edge, kind);
 
         if (road.sidewalkLeftWidth > 0)
             meshSidewalk(line, left, half + road.sidewalkLeftWidth, start.leftOuter, end.leftOuter, !start.leftGoesOn,
@@ -317,12 +322,12 @@ private:
         const StreetMaterial material = surfaceMaterial(road);
         const char* kind = j.path ? "sidewalks" : "junctions";
         const TriangleInfo top = info(material, object, j.path ? SurfacePart::Sidewalk : SurfacePart::Junction);
-        const float height = kRoadLevel + j.elevation;
+        const float level = j.path ? kPathLevel : kRoadLevel, height = level + j.elevation;
         for (const auto& [a, b, c] : triangulateRing(j.ring, folded_))
             triangle(world(j.ring[a], height), world(j.ring[b], height), world(j.ring[c], height), top, kind);
         const TriangleInfo edge = info(material, object, SurfacePart::Curb);
         for (const std::vector<Vec2d>& side : j.bareSides)
-            faces(side, std::vector<float>(side.size(), j.elevation), 0.0f, kRoadLevel, edge, kind);
+            faces(side, std::vector<float>(side.size(), j.elevation), 0.0f, level, edge, kind);
     }
 
     void meshCorner(const SidewalkCorner& c) {
