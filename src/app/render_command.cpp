@@ -143,6 +143,21 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
 
 namespace {
 
+/// The scene's bytes by array, with the stored triangles of each street kind (roads, junctions,
+/// sidewalks, ground cover, water, bridges, railways, the lamps' twin) under that kind's key rather than
+/// under `triangles` and `triangle_info`: the keys still add up to the scene's total.
+nlohmann::json bytesByKind(const SceneMemory& memory, const std::map<std::string, size_t>& trianglesByKind) {
+    nlohmann::json json = memoryJson(memory);
+    constexpr size_t kTriangleBytes = sizeof(Triangle) + sizeof(TriangleInfo);
+    for (const auto& [kind, n] : trianglesByKind) {
+        if (kind == "walls" || kind == "roofs") continue;
+        json["triangles"] = json["triangles"].get<size_t>() - n * sizeof(Triangle);
+        json["triangle_info"] = json["triangle_info"].get<size_t>() - n * sizeof(TriangleInfo);
+        json[kind] = json.value(kind, size_t(0)) + n * kTriangleBytes;
+    }
+    return json;
+}
+
 /// Writes --stats: counts, what was dropped and repaired, memory (the scene's, the peak host and
 /// device bytes), timings, rays/s and the scene description.
 void writeStats(const RenderOptions& o, const PreparedScene& prepared, const RenderSettings& settings,
@@ -170,7 +185,7 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
         {"bvh_nodes", scene.nodes.size()},
         {"materials", scene.materials.size()},
         {"bytes_scene", memory.total()},
-        {"bytes_by_kind", memoryJson(memory)},
+        {"bytes_by_kind", bytesByKind(memory, summary.trianglesByKind)},
         {"width", settings.width}, {"height", settings.height}, {"spp", settings.spp},
         {"seed", settings.seed}, {"threads", threads}, {"device", device.device},
         {"device_name", device.name},
