@@ -15,7 +15,7 @@ mkdir -p "$OUT"
 "$URBIS" render --osm "$DATA/sf_downtown_2023.osm.pbf" --width 960 --height 540 --spp 32 --out "$OUT/sf_downtown.png"
 "$URBIS" render --osm "$DATA/london_city_2020.osm.pbf" --camera-geo -0.1035,51.5095,160,45,-18 --fov 50 --width 960 \
     --height 540 --spp 32 --out "$OUT/london_city.png"
-"$URBIS" render --osm "$DATA/sf_downtown_2023.osm.pbf" --camera-geo -122.40334,37.78801,1.7,52,-2 --fov 65 --width 960 \
+"$URBIS" render --osm "$DATA/sf_downtown_2023.osm.pbf" --camera-geo -122.3940,37.7950,25,200,-25 --sun 55,200 --fov 60 --width 960 \
     --height 540 --spp 64 --out "$OUT/sf_street.png"
 "$URBIS" render --camera 8,1.7,45,-4,0.5,-20 --fov 70 --width 960 --height 540 --spp 64 --out "$OUT/generated_street.png"
 "$URBIS" render --buildings 3000 --camera -60,110,430,0,0,230 --fov 55 --width 960 --height 540 --spp 128 \
