@@ -4,11 +4,13 @@
 // angles and unequal widths, a two-road mitre, and every junction of the osmnx village extract.
 #include "streets_network_support.h"
 
+#include "layout/city_layout.h"
 #include "osm/osm_import.h"
 #include "streets/street_levels.h"
 
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <string>
 
 using namespace urbis;
@@ -140,4 +142,27 @@ TEST(StreetsJunction, VillageJunctionsAreWatertight) {
     size_t carriageway = 0;
     for (const JunctionShape& j : net.shapes.junctions) carriageway += j.path ? 0 : 1;
     EXPECT_GE(carriageway, 3u);
+}
+
+TEST(StreetsJunction, GeneratedCityJunctionsAreWatertight) {
+    LayoutParams params;
+    params.buildings = 3000;   // big enough for the river, its bridges and arterial junctions
+    const Network net(generateCity(params));
+    const FlatTriangles flat(net.mesh.mesh);
+    size_t junctions = 0, leaky = 0, ground = 0;
+    for (const JunctionShape& j : net.shapes.junctions) {
+        if (j.path) continue;
+        const Probe p = probeJunction(net, flat, j);
+        ++junctions;
+        ground += p.ground;
+        leaky += p.ground + p.wrongPart + p.doubled > 0 ? 1 : 0;
+    }
+    std::cout << leaky << " of " << junctions << " junctions with a ray on a sidewalk or two surfaces\n";
+    EXPECT_GE(junctions, 100u);
+    EXPECT_EQ(ground, 0u) << "no ray over a junction reaches the ground";
+    // 27 of 286 (9.4 %) are not: a neighbouring road's surface (a sidewalk, or a second plane) reaches
+    // over them, where an arterial (a diagonal or the ring) crosses the grid near another junction in
+    // the cases looked at. An open gap of issue 19 (the OSM extracts' junctions all pass), held at
+    // that share; no ray reaches the ground.
+    EXPECT_LE(double(leaky), 0.10 * double(junctions));
 }
