@@ -11,13 +11,6 @@ namespace {
 
 constexpr double kMinHoleArea = 0.01;  // m^2
 
-/// Distance from p to the segment a-b (to a when a = b).
-double distanceToSegment(Vec2d p, Vec2d a, Vec2d b) {
-    const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
-    const double t = length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
-    return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
-
 /// Drops points within kFootprintTolerance of their predecessor or of the segment between their
 /// neighbours, until none is left (every pass but the last drops a point: at most n + 1 passes).
 void dropNeedlessPoints(Ring& ring) {

@@ -1,6 +1,7 @@
 #include "layout/parks.h"
 
 #include "layout/street_furniture.h"
+#include "model/polygon_ops.h"
 #include "math/hash.h"
 
 #include <algorithm>
@@ -24,12 +25,6 @@ Road path(HighwayClass highway, float width, RoadSurface surface, Vec2d from, Ve
     r.laneMarkings = false;
     r.centerline = {from, centre, to};
     return r;
-}
-
-double distanceToSegment(Vec2d p, Vec2d a, Vec2d b) {
-    const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-    const double t = len2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
-    return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
 }
 
 bool onPath(Vec2d p, const std::vector<Road>& paths) {

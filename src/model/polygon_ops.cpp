@@ -75,4 +75,15 @@ std::array<Vec2d, 2> bounds(const Ring& ring) {
     return box;
 }
 
+Vec2d nearestOnSegment(Vec2d p, Vec2d a, Vec2d b) {
+    const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+    const double t = length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
+    return {a.x + t * dx, a.y + t * dy};
+}
+
+double distanceToSegment(Vec2d p, Vec2d a, Vec2d b) {
+    const Vec2d q = nearestOnSegment(p, a, b);
+    return std::hypot(p.x - q.x, p.y - q.y);
+}
+
 } // namespace urbis

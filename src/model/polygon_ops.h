@@ -26,6 +26,12 @@ bool contains(const Polygon& polygon, Vec2d p);
 /// Turns the outer ring counter-clockwise and the holes clockwise.
 void orient(Polygon& polygon);
 
+/// The point of segment a-b nearest p (a when a = b).
+Vec2d nearestOnSegment(Vec2d p, Vec2d a, Vec2d b);
+
+/// Distance from p to the segment a-b.
+double distanceToSegment(Vec2d p, Vec2d a, Vec2d b);
+
 /// Axis-aligned box of a ring: {min, max}.
 std::array<Vec2d, 2> bounds(const Ring& ring);
 

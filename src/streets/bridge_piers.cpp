@@ -1,5 +1,6 @@
 #include "streets/bridge_piers.h"
 
+#include "model/polygon_ops.h"
 #include "streets/bridge_deck.h"
 #include "streets/polyline.h"
 #include "streets/road_elevation.h"

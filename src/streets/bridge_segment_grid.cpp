@@ -45,10 +45,4 @@ std::vector<const SegmentGrid::Segment*> SegmentGrid::near(Vec2d lo, Vec2d hi) c
     return out;
 }
 
-double distanceToSegment(Vec2d p, Vec2d a, Vec2d b) {
-    const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
-    const double t = length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
-    return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
-
 } // namespace urbis

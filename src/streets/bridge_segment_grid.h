@@ -35,7 +35,4 @@ private:
     std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
 };
 
-/// Distance in plan from p to the segment a b, m.
-double distanceToSegment(Vec2d p, Vec2d a, Vec2d b);
-
 } // namespace urbis

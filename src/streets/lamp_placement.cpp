@@ -3,6 +3,8 @@
 #include "model/cell_grid.h"
 #include "model/polygon_ops.h"
 #include "streets/polyline.h"
+#include "streets/road_elevation.h"
+#include "streets/road_fitting.h"
 
 #include <algorithm>
 #include <array>
@@ -27,23 +29,11 @@ constexpr double kTurnReach = 30.0;          // m within which a mapped lamp tur
 constexpr double kCell = 32.0;               // m, the query grids' cells
 
 /// Classes that carry traffic: lamps keep off them, and their shared nodes make junctions.
-bool isCarriageway(HighwayClass h) {
-    return h != HighwayClass::Footway && h != HighwayClass::Cycleway && h != HighwayClass::Path &&
-           h != HighwayClass::Steps;
-}
-
-bool onSurface(const Road& r) { return !r.tunnel && !r.underground && !r.covered && r.layer >= 0; }
+bool isCarriageway(HighwayClass h) { return !isPath(h); }
 
 bool finite(Vec2d p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 double distance(Vec2d a, Vec2d b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
-/// The point of segment a-b nearest p.
-Vec2d nearestOnSegment(Vec2d p, Vec2d a, Vec2d b) {
-    const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-    const double t = len2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
-    return {a.x + t * dx, a.y + t * dy};
-}
 
 std::array<Vec2d, 2> around(Vec2d p, double r) { return {Vec2d{p.x - r, p.y - r}, Vec2d{p.x + r, p.y + r}}; }
 
@@ -58,7 +48,7 @@ class RoadIndex {
 public:
     explicit RoadIndex(const std::vector<Road>& roads) : roads_(roads), grid_(kCell) {
         for (uint32_t r = 0; r < roads.size(); ++r) {
-            if (!onSurface(roads[r])) continue;
+            if (!atSurface(roads[r])) continue;
             const auto& line = roads[r].centerline;
             for (uint32_t i = 0; i + 1 < line.size(); ++i) {
                 if (!finite(line[i]) || !finite(line[i + 1])) continue;
@@ -78,7 +68,7 @@ public:
             const auto [r, i] = segments_[s];
             if (hit) return;
             const auto& line = roads_[r].centerline;
-            hit = distance(p, nearestOnSegment(p, line[i], line[i + 1])) < reachOf(roads_[r]);
+            hit = distanceToSegment(p, line[i], line[i + 1]) < reachOf(roads_[r]);
         });
         return hit;
     }
@@ -117,7 +107,7 @@ public:
     explicit Junctions(const std::vector<Road>& roads) : grid_(kCell) {
         std::map<std::pair<double, double>, std::pair<int, double>> nodes;   // degree, widest half width
         for (const Road& r : roads) {
-            if (!onSurface(r) || !isCarriageway(r.highway)) continue;
+            if (!atSurface(r) || !isCarriageway(r.highway)) continue;
             for (size_t i = 0; i < r.centerline.size(); ++i) {
                 auto& [degree, halfWidth] = nodes[{r.centerline[i].x, r.centerline[i].y}];
                 degree += i == 0 || i + 1 == r.centerline.size() ? 1 : 2;
@@ -170,7 +160,7 @@ public:
 private:
     static bool ringNear(const Ring& ring, Vec2d p) {
         for (size_t i = 0; i < ring.size(); ++i)
-            if (distance(p, nearestOnSegment(p, ring[i], ring[(i + 1) % ring.size()])) < kBuildingClearance) return true;
+            if (distanceToSegment(p, ring[i], ring[(i + 1) % ring.size()]) < kBuildingClearance) return true;
         return false;
     }
     const std::vector<Building>& buildings_;
@@ -234,7 +224,7 @@ LampStyle lampStyle(HighwayClass highway) {
 }
 
 bool litRoad(const Road& road) {
-    return lampStyle(road.highway).spacing > 0.0 && onSurface(road) && !road.area && road.centerline.size() >= 2 &&
+    return lampStyle(road.highway).spacing > 0.0 && atSurface(road) && !road.area && road.centerline.size() >= 2 &&
            road.width > 0.0f;
 }
 

@@ -1,6 +1,7 @@
 #include "streets/road_fitting.h"
 
 #include "model/cell_grid.h"
+#include "model/polygon_ops.h"
 #include "streets/street_network_plane.h"
 
 #include <algorithm>
@@ -147,12 +148,7 @@ void clearSegment(const Footprints& footprints, Vec2d a, Vec2d b, double reach, 
 double distanceToFootprints(const Footprints& footprints, Vec2d p, double reach) {
     double best = kInfinity;
     for (uint32_t building : footprints.near(p, p, reach))
-        footprints.forEachEdge(building, [&](Vec2d a, Vec2d b) {
-            const Vec2d ab = b - a;
-            const double l2 = dot(ab, ab);
-            const double t = l2 > 0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
-            best = std::min(best, length(p - (a + ab * t)));
-        });
+        footprints.forEachEdge(building, [&](Vec2d a, Vec2d b) { best = std::min(best, distanceToSegment(p, a, b)); });
     return best;
 }
 
