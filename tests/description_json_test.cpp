@@ -80,7 +80,7 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "geometry", "geometry.walls", "geometry.roofs", "geometry.lamps", "geometry.wall_tiles", "geometry.streets",
         "integrator", "integrator.kind", "integrator.spp", "integrator.seed", "integrator.max_depth",
         "integrator.rr_depth", "integrator.rr_survival", "integrator.light_sampler", "integrator.light_samples",
-        "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers", "film.exr_float"};
+        "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers", "film.exr_float", "film.denoise"};
     EXPECT_EQ(keys, expected);
     // The geographic camera's own keys, once it is set.
     SceneDescription geo;

@@ -63,7 +63,7 @@ inline void expectSameFilmBits(const Film& a, const Film& b) {
             EXPECT_EQ(std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])), 0) << "array " << array;
         },
         a.arrays, b.arrays);
-    EXPECT_EQ(array, 9);
+    EXPECT_EQ(array, 11);
 }
 
 } // namespace urbis::test

@@ -196,7 +196,7 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
         {"resident_host_bytes", residentHostBytes()},
         {"peak_device_bytes", device.device == "cuda" ? nlohmann::json(device.memory.total()) : nlohmann::json(nullptr)},
         {"seconds", {{"import", prepared.secondsImport}, {"citygen", prepared.secondsCitygen}, {"bvh", prepared.secondsBvh},
-                     {"render", counters.seconds}, {"write", secondsWrite}}},
+                     {"render", counters.seconds}, {"denoise", device.secondsDenoise}, {"write", secondsWrite}}},
         {"seconds_render", counters.seconds},
         {"rays", counters.rays},
         {"rays_per_second", counters.seconds > 0 ? double(counters.rays) / counters.seconds : 0.0},
@@ -222,7 +222,8 @@ void runRender(const RenderOptions& o) {
     checkDistinctOutputs("--stats", run.statsFile, "--save-scene", o.saveSceneFile);
     const size_t limit = memoryLimit(run.maxMemory);
     const uint32_t layers = filmLayerMaskOf(film.layers);
-    const bool aovs = filmOutputNeedsAovs(film.output, layers);
+    // The denoiser is guided by the AOVs: it needs the AOV pass whatever the output.
+    const bool aovs = film.denoise || filmOutputNeedsAovs(film.output, layers);
     requireMemory(hostFilmBytes(film.width, film.height, aovs), limit,
                   "the " + std::to_string(film.width) + "x" + std::to_string(film.height) + " image");
 
@@ -233,8 +234,8 @@ void runRender(const RenderOptions& o) {
     RenderCounters counters;
     DeviceReport device;
     Film image(settings.width, settings.height, aovs);
-    renderOnDevice(prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image, run.device, isatty(2),
-                   run.verbose, counters, device);
+    renderOnDevice(prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image, film.denoise,
+                   run.device, isatty(2), run.verbose, counters, device);
 
     auto t0 = Clock::now();
     writeFilm(image, film.output, FilmOutputOptions{film.exposure, film.exrFloat, layers});

@@ -2,10 +2,17 @@
 
 #include "base/input_error.h"
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 
 namespace urbis {
+
+namespace {
+double secondsSince(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+} // namespace
 
 std::string cpuModelName() {
     std::ifstream cpuinfo("/proc/cpuinfo");
@@ -19,8 +26,8 @@ std::string cpuModelName() {
 }
 
 void renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
-                    Film& film, const std::string& device, bool showProgress, bool verbose, RenderCounters& counters,
-                    DeviceReport& report) {
+                    Film& film, bool denoise, const std::string& device, bool showProgress, bool verbose,
+                    RenderCounters& counters, DeviceReport& report) {
     const bool sayDevice = verbose || device == "cuda";
     if (device != "cpu") {
         GpuInfo info = probeGpu();
@@ -32,8 +39,11 @@ void renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettin
                 if (sayDevice) std::fprintf(stderr, "urbis: rendering on %s (cuda)\n", info.name.c_str());
                 gpu->setFilm(film);
                 gpu->render(camera, settings, samples, counters);
+                const auto start = std::chrono::steady_clock::now();
+                if (denoise) gpu->denoise();
+                const double secondsDenoise = secondsSince(start);
                 gpu->readFilm(film);
-                report = DeviceReport{"cuda", info.name, gpu->memory()};
+                report = DeviceReport{"cuda", info.name, gpu->memory(), secondsDenoise};
                 return;
             } catch (const InputError& e) {
                 if (device == "cuda") throw;
@@ -45,6 +55,9 @@ void renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettin
     }
     report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}};
     renderCpu(scene.view(), camera, settings, samples, film, showProgress, counters);
+    const auto start = std::chrono::steady_clock::now();
+    if (denoise) denoiseCpu(film);
+    report.secondsDenoise = secondsSince(start);
 }
 
 } // namespace urbis

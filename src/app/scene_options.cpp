@@ -166,6 +166,10 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
         CLI::Option* flag = cmd.add_flag("--exr-float", v.film.exrFloat, "EXR colour, albedo and normal as 32-bit float (default half)");
         overrides_.emplace_back(flag, [&v](SceneDescription& d) { d.film.exrFloat = v.film.exrFloat; });
     }
+    if (wanted("--denoise")) {
+        CLI::Option* flag = cmd.add_flag("--denoise", v.film.denoise, "Denoise the HDR film, guided by its AOVs, before it is written");
+        overrides_.emplace_back(flag, [&v](SceneDescription& d) { d.film.denoise = v.film.denoise; });
+    }
 }
 
 SceneDescription SceneCommandLine::resolve() const {

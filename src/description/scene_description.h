@@ -108,6 +108,7 @@ struct FilmDescription {
     /// Layers of kFilmLayerNames (film/film_layers.h) an .exr output holds besides RGBA (a .png holds none).
     std::vector<std::string> layers{std::begin(kFilmLayerNames), std::end(kFilmLayerNames)};
     bool exrFloat = false;             ///< an .exr's colour, albedo and normal as float rather than half
+    bool denoise = false;              ///< the AOV-guided denoiser on the HDR film before it is written (docs/film.md)
 };
 
 struct SceneDescription {

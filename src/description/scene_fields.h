@@ -95,6 +95,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.text("output", d.film.output);
         v.choiceList("layers", d.film.layers, std::span(kFilmLayerNames));
         v.boolean("exr_float", d.film.exrFloat);
+        v.boolean("denoise", d.film.denoise);
     });
 }
 

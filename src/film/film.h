@@ -24,6 +24,8 @@ struct FilmArrays {
     Array<Vec3f> albedoSum, normalSum, positionSum;
     Array<float> depthSum;
     Array<uint32_t> surfaceCount, objectId, partId;
+    Array<Vec3f> emissionSum;
+    Array<float> luminanceSqSum;
 };
 
 /// Calls `f(viewMember, isAov, array...)` for every per-pixel array, `array...` being that member
@@ -39,6 +41,8 @@ void forEachFilmArray(F&& f, Arrays&... arrays) {
     f(&FilmView::surfaceCount, true, arrays.surfaceCount...);
     f(&FilmView::objectId, true, arrays.objectId...);
     f(&FilmView::partId, true, arrays.partId...);
+    f(&FilmView::emissionSum, true, arrays.emissionSum...);
+    f(&FilmView::luminanceSqSum, true, arrays.luminanceSqSum...);
 }
 
 /// The value a fresh film's array starts from: ids kSkyId (no surface seen yet), all else zero.

@@ -23,6 +23,7 @@ struct AovSample {
     bool surface = false;   ///< the ray hit a surface; otherwise only the zeros below count
     Vec3f albedo;           ///< the surface material's albedo
     Vec3f normal;           ///< unit shading normal, world space, facing the camera
+    Vec3f emission;         ///< the surface material's emitted radiance
     Vec3f position;         ///< world position of the hit, metres
     float depth = 0;        ///< distance of the hit along the camera's view axis (z depth), metres
 };
@@ -40,6 +41,8 @@ struct FilmView {
     uint32_t* surfaceCount = nullptr; ///< samples whose camera ray hit a surface
     uint32_t* objectId = nullptr;     ///< through the pixel's centre; kSkyId for the sky
     uint32_t* partId = nullptr;       ///< through the pixel's centre; kSkyId for the sky
+    Vec3f* emissionSum = nullptr;     ///< over every sample: what the first surface emits (the sky adds zero)
+    float* luminanceSqSum = nullptr;  ///< sum of squared radiance luminance, in sample order (the denoiser's variance)
 
     URBIS_HD bool hasAovs() const { return albedoSum != nullptr; }
     URBIS_HD size_t pixel(uint32_t x, uint32_t y) const { return size_t(y) * width + x; }
@@ -49,6 +52,7 @@ struct FilmView {
 URBIS_HD inline void addAovSample(const FilmView& film, size_t pixel, const AovSample& sample) {
     film.albedoSum[pixel] += sample.albedo;
     film.normalSum[pixel] += sample.normal;
+    film.emissionSum[pixel] += sample.emission;
     if (!sample.surface) return;
     film.positionSum[pixel] += sample.position;
     film.depthSum[pixel] += sample.depth;

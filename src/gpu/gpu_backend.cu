@@ -1,6 +1,6 @@
 // The CUDA backend: device memory and kernel launches only. Every kernel calls the shared
-// URBIS_HD per-ray code (addPathSamples, addAovSamples, intersectScene, occludedScene), the same as the
-// CPU backend.
+// URBIS_HD per-ray code (addPathSamples, addAovSamples, intersectScene, occludedScene) or per-pixel
+// code (the denoiser's passes), the same as the CPU backend.
 #include "gpu/gpu_backend.h"
 
 #include "gpu/cuda_check.h"
@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 namespace urbis {
 
@@ -53,6 +54,31 @@ __global__ void __launch_bounds__(kTileX * kTileY) aovKernel(SceneView scene, Ca
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     if (x < settings.width && y < settings.height) addAovSamples(scene, camera, settings, x, y, samples, film);
+}
+
+/// One thread per pixel: the denoiser's guide and starting signal.
+__global__ void __launch_bounds__(kTileX * kTileY) denoisePrepareKernel(FilmView film, DenoiseGuide* guide,
+                                                                        DenoiseSignal* signal) {
+    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+    if (x < film.width && y < film.height) prepareDenoise(film, x, y, guide[film.pixel(x, y)], signal[film.pixel(x, y)]);
+}
+
+/// One thread per pixel: one a-trous iteration, taps `step` pixels apart.
+__global__ void __launch_bounds__(kTileX * kTileY) denoiseStepKernel(DenoiseBuffers buffers, int step,
+                                                                     DenoiseParams params) {
+    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+    if (x < buffers.width && y < buffers.height)
+        buffers.out[size_t(y) * buffers.width + x] = denoiseStep(buffers, x, y, step, params);
+}
+
+/// One thread per pixel: the filtered irradiance times albedo into the film's radiance sums.
+__global__ void __launch_bounds__(kTileX * kTileY) denoiseFinishKernel(FilmView film, const DenoiseGuide* guide,
+                                                                       const DenoiseSignal* signal) {
+    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+    if (x < film.width && y < film.height) finishDenoise(film, x, y, guide[film.pixel(x, y)], signal[film.pixel(x, y)]);
 }
 
 template <bool CostlyLeaves>
@@ -252,6 +278,30 @@ void GpuScene::render(const Camera& camera, const RenderSettings& settings, Samp
     counters.seconds = timer.stopMs() * 1e-3;
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());
     counters.rays = m.rayCount.download()[0];
+}
+
+void GpuScene::denoise(const DenoiseParams& params) {
+    Impl& m = *impl_;
+    const FilmView film = m.filmView();
+    if (!film.hasAovs()) throw std::invalid_argument("GpuScene::denoise: the film keeps no AOVs to guide the filter");
+    const size_t pixels = size_t(film.width) * film.height;
+    m.requireFree(pixels * (sizeof(DenoiseGuide) + 2 * sizeof(DenoiseSignal)), "the denoiser");
+    // Held for this call only: a frame's guide and two signals, the iterations' ping-pong.
+    DeviceBuffer<DenoiseGuide> guide(pixels);
+    DeviceBuffer<DenoiseSignal> signal(pixels), next(pixels);
+    const dim3 block(kTileX, kTileY);
+    const dim3 grid((film.width + kTileX - 1) / kTileX, (film.height + kTileY - 1) / kTileY);
+    denoisePrepareKernel<<<grid, block>>>(film, guide.data(), signal.data());
+    checkLaunch("denoisePrepareKernel");
+    for (uint32_t i = 0; i < params.iterations; ++i) {
+        denoiseStepKernel<<<grid, block>>>(DenoiseBuffers{film.width, film.height, guide.data(), signal.data(), next.data()},
+                                           1 << i, params);
+        checkLaunch("denoiseStepKernel");
+        std::swap(signal, next);
+    }
+    denoiseFinishKernel<<<grid, block>>>(film, guide.data(), signal.data());
+    checkLaunch("denoiseFinishKernel");
+    URBIS_CUDA_CHECK(cudaDeviceSynchronize());
 }
 
 void GpuScene::readFilm(Film& host) const {

@@ -3,6 +3,7 @@
 // Per-ray code is not here: the kernels call the same URBIS_HD headers as the CPU backend.
 #pragma once
 
+#include "film/denoise_filter.h"
 #include "film/film.h"
 #include "integrators/render_counters.h"
 #include "math/ray.h"
@@ -57,6 +58,9 @@ public:
     /// tracer's kernel, then the AOV pass's when the film keeps AOVs. The film must be
     /// settings.width x settings.height. counters.seconds is the kernels' time (CUDA events).
     void render(const Camera& camera, const RenderSettings& settings, SampleRange samples, RenderCounters& counters);
+    /// Denoises the device film in place, as denoiseCpu does the host film (the same per-pixel
+    /// passes of film/denoise_filter.h, one kernel each). The film must keep AOVs.
+    void denoise(const DenoiseParams& params = {});
     /// Copies the device film into `film`.
     void readFilm(Film& film) const;
     /// The mean radiance of a fresh device film of settings.spp samples per pixel, like renderCpu's.

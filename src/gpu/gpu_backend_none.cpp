@@ -26,6 +26,7 @@ GpuScene::~GpuScene() = default;
 std::unique_ptr<GpuScene> GpuScene::upload(const Scene&, size_t) { noCuda(); }
 void GpuScene::setFilm(const Film&) { noCuda(); }
 void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, RenderCounters&) { noCuda(); }
+void GpuScene::denoise(const DenoiseParams&) { noCuda(); }
 void GpuScene::readFilm(Film&) const { noCuda(); }
 LinearImage GpuScene::render(const Camera&, const RenderSettings&, RenderCounters&) { noCuda(); }
 std::vector<SurfaceHit> GpuScene::intersect(const std::vector<Ray>&) { noCuda(); }

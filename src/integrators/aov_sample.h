@@ -12,8 +12,8 @@
 
 namespace urbis {
 
-/// What camera ray `ray` sees first: material albedo, the normal facing the camera, world
-/// position, and depth as the distance along the camera's view axis (z depth, not the ray's t).
+/// What camera ray `ray` sees first: material albedo and emission, the normal facing the camera,
+/// world position, and depth as the distance along the camera's view axis (z depth, not the ray's t).
 /// The sky gives zeros and `surface` false.
 URBIS_HD inline AovSample aovOfCameraRay(const SceneView& scene, const Camera& camera, const Ray& ray) {
     const SurfaceHit hit = intersectScene(scene, ray);
@@ -21,6 +21,8 @@ URBIS_HD inline AovSample aovOfCameraRay(const SceneView& scene, const Camera& c
     if (!hit.valid()) return out;
     out.surface = true;
     out.albedo = scene.materials[hit.material].albedo;
+    // The emission a camera ray counts in full (the path tracer's weight 1 at its first hit).
+    out.emission = scene.materials[hit.material].emission;
     out.normal = hit.normal;
     out.position = hit.position;
     out.depth = hit.t * dot(ray.dir, camera.forward);
