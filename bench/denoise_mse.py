@@ -138,9 +138,9 @@ def main():
         if not os.path.exists(reference):
             render(args, options, args.ref_spp, reference)
         ref, _ = read_exr_rgb(reference)
-        noisy_path = os.path.join(cache, f"{name}_{args.spp}spp.exr")
-        clean_path = os.path.join(cache, f"{name}_{args.spp}spp_denoised.exr")
-        stats_path = os.path.join(cache, f"{name}_denoise_stats.json")
+        noisy_path = os.path.join(cache, f"{name}_{args.size}_{args.spp}spp.exr")
+        clean_path = os.path.join(cache, f"{name}_{args.size}_{args.spp}spp_denoised.exr")
+        stats_path = os.path.join(cache, f"{name}_{args.size}_denoise_stats.json")
         render(args, options, args.spp, noisy_path, device=args.device)
         render(args, options, args.spp, clean_path, stats=stats_path, denoise=True, device=args.device)
         noisy, _ = read_exr_rgb(noisy_path)
