@@ -37,3 +37,18 @@ TEST(FilmCli, ExrInAMissingFolderIsOneLine) {
     EXPECT_NE(r.err.find("no/such/folder/x.exr"), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
+
+// --denoise runs the AOV pass for a PNG too and filters the film before it is written: the EXR's
+// colour changes, its sample counts and ids do not; the stats give the filter's time.
+TEST(FilmCli, DenoiseFiltersTheWrittenFilm) {
+    auto dir = scratchDir("film_cli_denoise");
+    ASSERT_EQ(runUrbis(kTiny + "--exr-float --out noisy.exr", dir).exitCode, 0);
+    CommandResult r = runUrbis(kTiny + "--exr-float --denoise --out clean.exr --stats stats.json", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const ExrRead noisy = readExr((dir / "noisy.exr").string()), clean = readExr((dir / "clean.exr").string());
+    EXPECT_NE(noisy.floats.at("R"), clean.floats.at("R"));
+    EXPECT_EQ(noisy.uints.at("id.object"), clean.uints.at("id.object"));
+    EXPECT_EQ(noisy.uints.at("samples"), clean.uints.at("samples"));
+    EXPECT_NE(readFile((dir / "stats.json").string()).find("\"denoise\""), std::string::npos);
+    EXPECT_EQ(runUrbis(kTiny + "--denoise --out clean.png", dir).exitCode, 0);
+}
