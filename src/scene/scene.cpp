@@ -1,10 +1,20 @@
 #include "scene/scene.h"
 
+#include "accel/split_references.h"
+
 #include <algorithm>
+#include <cfloat>
 #include <stdexcept>
 #include <tuple>
 
 namespace urbis {
+namespace {
+
+/// Height above the lowest ground (metres) under which a triangle's box must lie to count as a street
+/// surface: up to the rails on their ballast at 0.45 m (streets/street_levels.h).
+constexpr float kLowLayer = 0.5f;
+
+} // namespace
 
 Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, const std::vector<WallRecord>& wholeWalls,
                    WallTileSize tileSize, const std::vector<GroundRecord>& grounds,
@@ -13,7 +23,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
     // Each kind's records in input order, as PrimKinds lists them.
     const auto inputs = std::tie(mesh.triangles, walls, grounds, lamps);
     static_assert(std::tuple_size_v<decltype(inputs)> == kPrimKindCount, "an input per kind of PrimKinds");
-    // Kind k's record i is primitive first[k] + i, and its leaf slot lies in [first[k], first[k + 1]).
+    // Kind k's record i is primitive first[k] + i.
     uint32_t first[kPrimKindCount + 1] = {};
     size_t total = 0;
     forEachPrimKind([&](auto kind) {
@@ -23,23 +33,43 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
     if (total >= (size_t(1) << 31)) throw std::length_error("scene: more than 2^31 primitives");
     first[kPrimKindCount] = uint32_t(total);
 
-    std::vector<Bounds3f> treeBounds, rootBounds;
+    // Street surfaces (what lies within kLowLayer of the ground) follow streets at any angle: on a
+    // diagonal grid a sidewalk's or a curb's box is many times its area, so each is given several
+    // references, one per piece (splitTriangleBounds); emitting triangles stay whole, since the
+    // light list takes each slot's triangle once.
+    float lowTop = grounds.empty() ? -FLT_MAX : FLT_MAX;
+    for (const GroundRecord& g : grounds) lowTop = std::min(lowTop, g.height + kLowLayer);
+    const SplitOptions split;
+    std::vector<Bounds3f> treeBounds, rootBounds, pieces;
     std::vector<uint32_t> treeIds, treeCosts, rootIds;
     bool costly = false;
     forEachPrimKind([&](auto kind) {
         const auto& records = std::get<kind.index>(inputs);
         for (size_t i = 0; i < records.size(); ++i) {
             const uint32_t id = first[kind.index] + uint32_t(i);
+            const Bounds3f box = primBounds(records[i]);
             if constexpr (kKindAtBvhRoot<kind.index>) {
                 static_assert(!kCostlyKind<kind.index>, "a kind at the root is tested where the traversal meets it");
                 rootIds.push_back(id);
-                rootBounds.push_back(primBounds(records[i]));
-            } else {
-                treeIds.push_back(id);
-                treeBounds.push_back(primBounds(records[i]));
-                treeCosts.push_back(PrimRecord<kind.index>::kBvhCost);
-                costly |= kCostlyKind<kind.index>;
+                rootBounds.push_back(box);
+                continue;
             }
+            pieces.assign(1, box);
+            if constexpr (std::is_same_v<PrimRecord<kind.index>, Triangle>) {
+                const uint32_t material = mesh.info[i].material;
+                const Vec3f e = material < materials.size() ? materials[material].emission : Vec3f{0, 0, 0};
+                const bool emits = e.x > 0.0f || e.y > 0.0f || e.z > 0.0f;
+                if (box.hi.y <= lowTop && !emits) {
+                    pieces.clear();
+                    splitTriangleBounds(records[i].p0, records[i].p1, records[i].p2, split, pieces);
+                }
+            }
+            for (const Bounds3f& piece : pieces) {
+                treeIds.push_back(id);
+                treeBounds.push_back(piece);
+                treeCosts.push_back(PrimRecord<kind.index>::kBvhCost);
+            }
+            costly |= kCostlyKind<kind.index>;
         }
     });
     BvhBuildOptions options;
@@ -49,7 +79,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
     for (size_t i = 0; i < rootIds.size(); ++i) attachLeafAtRoot(bvh, rootIds[i], rootBounds[i]);
 
     // Leaves in node order take the next slots of their kind, and each kind's records are stored in
-    // that order: slot s of kind k is record s - first[k].
+    // that order, a split triangle once per reference: slot s of kind k is record s - kindStart(k).
     Scene scene;
     scene.triangles.reserve(mesh.size());
     scene.triangleInfo.reserve(mesh.size());
@@ -61,8 +91,10 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
         while (prim >= first[k + 1]) ++k;
         return k;
     };
-    uint32_t next[kPrimKindCount];
-    for (uint32_t k = 0; k < kPrimKindCount; ++k) next[k] = first[k];
+    // A kind's slots start after every reference of the kinds before it (split triangles have several).
+    uint32_t refs[kPrimKindCount] = {}, next[kPrimKindCount];
+    for (uint32_t prim : bvh.primOrder) ++refs[kindOf(prim)];
+    for (uint32_t k = 0, start = 0; k < kPrimKindCount; start += refs[k++]) next[k] = start;
     for (BvhNode& node : bvh.nodes)
         for (int l = 0; l < kBvhWidth; ++l) {
             const uint32_t size = node.leafSize(l);
