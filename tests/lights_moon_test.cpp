@@ -4,6 +4,7 @@
 #include "cpu/cpu_renderer.h"
 #include "description/celestial_parts.h"
 #include "lights/light_build.h"
+#include "lights/sun_light.h"
 #include "math/constants.h"
 #include "scene/camera_framing.h"
 #include "scene/scene.h"
