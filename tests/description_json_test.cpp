@@ -74,6 +74,7 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "source.buildings", "source.seed",
         "camera", "camera.position", "camera.target", "camera.geo", "camera.fov",
         "sun", "sun.elevation", "sun.azimuth", "sun.angular_radius", "sun.irradiance",
+        "astronomy", "astronomy.time", "astronomy.location", "astronomy.sun_from_time",
         "sky", "sky.zenith", "sky.horizon", "sky.ground", "sky.exponent",
         "materials", "materials.ground", "materials.ground.albedo", "materials.window_glass",
         "materials.window_glass.transmittance", "materials.window_glass.ior", "materials.lit_room",
