@@ -8,6 +8,7 @@
 #include "base/input_error.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace urbis {
 
@@ -107,9 +108,11 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
              d.astronomy.time = text;
              d.astronomy.sunFromTime = true;
          });
+    char place[48];
+    std::snprintf(place, sizeof place, "%.4f,%.4f", kDefaultLocation[0], kDefaultLocation[1]);
     bind(cmd, "--location", text_.location,
-         "LON,LAT in degrees the sky is seen from (default: the OSM extract's centre; the generated city: Prague, "
-         "14.4213,50.0875)",
+         std::string("LON,LAT in degrees the sky is seen from (default: the OSM extract's centre; the generated city: "
+                     "Prague, ") + place + ")",
          [](SceneDescription& d, const std::string& text) { d.astronomy.location = parseLocation("--location", text); });
 
     // sun
