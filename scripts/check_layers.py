@@ -28,6 +28,7 @@ LAYERS = {
     "math": 0,          # vectors, frames, bounds, rng, sampling with its pdf (host+device)
     "base": 1,          # what every layer shares on the host: the error type InputError and FailureKind
     "io": 2,            # files written to a temporary and renamed
+    "astro": 2,         # civil time, the sun's and the moon's positions, sidereal time (host only)
     "film": 3,          # images, accumulation, AOVs, tone mapping, PNG and EXR files
     "accel": 4,         # BVH nodes, the build and the traversal; knows math only
     "scene": 5,         # host+device POD records (triangles, walls, ground, materials, prim kinds and refs,

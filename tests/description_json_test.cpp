@@ -38,6 +38,7 @@ SceneDescription unusualScene() {
     d.camera.geo = GeoCameraDescription{-122.397, 37.789, 300.0f, 20.0f, -25.0f};
     d.camera.fov = 35.5f;
     d.sun = SunDescription{12.0f, 270.0f, 0.5f, Vec3f{1.0f, 2.0f, 3.0f}};
+    d.astronomy = AstronomyDescription{"2024-06-21T20:30+02:00", std::array<double, 2>{-122.4, 37.79}, false};
     d.sky = SkyDescription{Vec3f{0.1f, 0.2f, 0.3f}, Vec3f{0.4f, 0.5f, 0.6f}, Vec3f{0.7f, 0.8f, 0.9f}, 0.3f};
     d.materials.city.groundAlbedo = Vec3f{0.2f, 0.2f, 0.2f};
     d.materials.city.glassTransmittance = Vec3f{0.5f, 0.6f, 0.7f};
@@ -73,6 +74,7 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "source.buildings", "source.seed",
         "camera", "camera.position", "camera.target", "camera.geo", "camera.fov",
         "sun", "sun.elevation", "sun.azimuth", "sun.angular_radius", "sun.irradiance",
+        "astronomy", "astronomy.time", "astronomy.location", "astronomy.sun_from_time",
         "sky", "sky.zenith", "sky.horizon", "sky.ground", "sky.exponent",
         "materials", "materials.ground", "materials.ground.albedo", "materials.window_glass",
         "materials.window_glass.transmittance", "materials.window_glass.ior", "materials.lit_room",
@@ -111,6 +113,9 @@ TEST(DescriptionJson, RoundTripKeepsEveryField) {
     EXPECT_EQ(back.materials.city.glassIor, 1.33f);
     EXPECT_EQ(back.geometry.modes.roofs, Representation::Plain);
     EXPECT_EQ(back.integrator.lightSampler, "uniform");
+    EXPECT_EQ(back.astronomy.time, "2024-06-21T20:30+02:00");
+    EXPECT_EQ((*back.astronomy.location)[1], 37.79);
+    EXPECT_FALSE(back.astronomy.sunFromTime);
     EXPECT_EQ(back.film.layers, (std::vector<std::string>{"depth", "albedo"}));
     // Floats are written as their shortest decimal text.
     EXPECT_NE(sceneFileText(d).find("\"metres_per_level\": 3.3,"), std::string::npos) << sceneFileText(d);

@@ -1,7 +1,8 @@
-// The urbis command: render, inspect, bench.
+// The urbis command: render, inspect, bench, sun.
 #include "app/bench_command.h"
 #include "app/inspect_command.h"
 #include "app/render_command.h"
+#include "app/sun_command.h"
 #include "base/input_error.h"
 
 #include <cstdio>
@@ -23,7 +24,7 @@ const char* const kExitCodes = "Exit codes:\n"
 /// The parser's message, or for a first argument that is no subcommand, one naming it.
 std::string usageMessage(const CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
     if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-')
-        return std::string("unknown subcommand '") + argv[1] + "' (commands: render, inspect, bench)";
+        return std::string("unknown subcommand '") + argv[1] + "' (commands: render, inspect, bench, sun)";
     return e.what();
 }
 
@@ -39,21 +40,26 @@ int main(int argc, char** argv) {
                  "  urbis render --device cuda --spp 256 --out gpu.png\n"
                  "  urbis render --osm city.osm.pbf --save-scene city.json   # and later: urbis render --scene city.json\n"
                  "  urbis bench --device cuda --buildings 100000 --json bench.json\n"
-                 "  urbis inspect city.osm.pbf --json --ids\n"};
+                 "  urbis inspect city.osm.pbf --json --ids\n"
+                 "  urbis render --time 2024-06-21T21:30+02:00 --exposure 8   # the sun, moon and stars of that hour\n"
+                 "  urbis sun --location -122.4,37.79 --time 2024-06-21T20:30-07:00 --json\n"};
     app.footer(kExitCodes);
     app.set_version_flag("--version", "urbis " URBIS_VERSION);
     app.require_subcommand(1);
     urbis::RenderCommandLine render;
     urbis::InspectOptions inspect;
     urbis::BenchCommandLine bench;
+    urbis::SunOptions sun;
     urbis::addRenderCommand(app, render);
     urbis::addInspectCommand(app, inspect);
     urbis::addBenchCommand(app, bench);
+    urbis::addSunCommand(app, sun);
     try {
         app.parse(argc, argv);
         if (app.got_subcommand("render")) urbis::runRender(render.resolve());
         if (app.got_subcommand("inspect")) urbis::runInspect(inspect);
         if (app.got_subcommand("bench")) urbis::runBench(bench.resolve());
+        if (app.got_subcommand("sun")) urbis::runSun(sun);
     } catch (const CLI::Success& e) {
         return app.exit(e);  // --help, --help-all, --version
     } catch (const CLI::ParseError& e) {

@@ -42,6 +42,14 @@ std::optional<std::array<double, 4>> parseBbox(const std::string& text) {
     return std::array<double, 4>{b[0], b[1], b[2], b[3]};
 }
 
+std::array<double, 2> parseLocation(const std::string& option, const std::string& text) {
+    std::vector<double> l = parseNumberList(option, text, ',', 2, 2);
+    if (!(l[0] >= -180 && l[0] <= 180 && l[1] >= -90 && l[1] <= 90))
+        throw InputError(option + ": need LON in [-180, 180] and LAT in [-90, 90] degrees, got '" + text + "'",
+                         FailureKind::Usage);
+    return {l[0], l[1]};
+}
+
 size_t parseMemorySize(const std::string& option, const std::string& text) {
     double number = 0;
     auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), number);

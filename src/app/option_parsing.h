@@ -18,6 +18,10 @@ std::vector<double> parseNumberList(const std::string& option, const std::string
 /// that is malformed, inverted or off the globe.
 std::optional<std::array<double, 4>> parseBbox(const std::string& text);
 
+/// "LON,LAT" in degrees (longitude in [-180, 180], latitude in [-90, 90]). Throws a usage
+/// InputError naming `option` on anything else.
+std::array<double, 2> parseLocation(const std::string& option, const std::string& text);
+
 /// A size in bytes: a number with an optional binary unit K, M, G or T (KiB ... TiB; "KB",
 /// "GiB" and lower case too), e.g. "8G", "512M", "2000000000", "1.5G". Throws a usage
 /// InputError naming `option` on anything else, on zero and on sizes past 2^63.

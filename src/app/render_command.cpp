@@ -9,6 +9,7 @@
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
 #include "cpu/cpu_renderer.h"
+#include "description/celestial_parts.h"
 #include "description/scene_checks.h"
 #include "description/scene_json.h"
 #include "description/scene_parts.h"
@@ -115,6 +116,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     meshOptions.memoryLimit = memoryLimit;
     meshOptions.streets = d.geometry.streets;
     CityMesh mesh;
+    CelestialLights celestial;
     {
         auto t0 = Clock::now();
         CityModel city = loadCity(d.source);
@@ -128,13 +130,15 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
 
         p.camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces);
         checkCamera(strict, p.camera, city, mesh.cityBounds);
+        celestial = celestialLightsOf(d, city.origin);
         p.summary = summarise(city, mesh);
     }  // the city is released here, before the scene's copy of the mesh is made
 
     auto t0 = Clock::now();
     const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
     p.scene = buildCityScene(mesh, *wallTileSizeOf(d.geometry.wallTiles), centre);
-    p.scene.sun = sunOf(d.sun);
+    p.scene.sun = celestial.sun;
+    p.scene.night = celestial.night;
     p.scene.sky = skyOf(d.sky);
     buildLights(p.scene);
     p.secondsBvh = secondsSince(t0);

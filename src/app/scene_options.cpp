@@ -1,12 +1,14 @@
 #include "app/scene_options.h"
 
 #include "app/option_parsing.h"
+#include "astro/civil_time.h"
 #include "description/scene_checks.h"
 #include "description/scene_json.h"
 #include "layout/city_layout.h"
 #include "base/input_error.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace urbis {
 
@@ -97,6 +99,22 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
                [](SceneDescription& d, float fov) { d.camera.fov = fov; }),
           1.0, 170.0);
 
+    // date, time and place; registered before --sun, whose angles override the time's sun
+    bind(cmd, "--time", text_.time,
+         "ISO 8601 date and time with a UTC offset or Z (2024-06-21T20:30+02:00): sets the sun, the moon and the stars",
+         [](SceneDescription& d, const std::string& text) {
+             std::string error;
+             if (!parseIsoTime(text, error)) throw InputError("--time: '" + text + "': " + error, FailureKind::Usage);
+             d.astronomy.time = text;
+             d.astronomy.sunFromTime = true;
+         });
+    char place[48];
+    std::snprintf(place, sizeof place, "%.4f,%.4f", kDefaultLocation[0], kDefaultLocation[1]);
+    bind(cmd, "--location", text_.location,
+         std::string("LON,LAT in degrees the sky is seen from (default: the OSM extract's centre; the generated city: "
+                     "Prague, ") + place + ")",
+         [](SceneDescription& d, const std::string& text) { d.astronomy.location = parseLocation("--location", text); });
+
     // sun
     text_.sun = std::to_string(int(v.sun.elevation)) + "," + std::to_string(int(v.sun.azimuth));
     withDefault(bind(cmd, "--sun", text_.sun, "ELEVATION,AZIMUTH of the sun in degrees (azimuth clockwise from north)",
@@ -108,6 +126,7 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
                              throw InputError("--sun: azimuth must be in [-360, 360] degrees", FailureKind::Usage);
                          d.sun.elevation = float(s[0]);
                          d.sun.azimuth = float(s[1]);
+                         d.astronomy.sunFromTime = false;
                      }));
     range(bind(cmd, "--sun-radius", v.sun.angularRadius, "Angular radius of the sun, degrees",
                [](SceneDescription& d, float r) { d.sun.angularRadius = r; }),

@@ -45,7 +45,7 @@ private:
     SceneDescription defaults_;
     SceneDescription values_;   ///< storage of the options that take a field's own type
     struct CompoundValues {     ///< storage of the options that take a text ("40,150", "20:100", ...)
-        std::string bbox, heightRange, camera, cameraGeo, sun, geometry;
+        std::string bbox, heightRange, camera, cameraGeo, time, location, sun, geometry;
     } text_;
     std::string sceneFile_, saveScene_;
     bool noStreets_ = false;   ///< --no-streets

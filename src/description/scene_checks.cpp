@@ -1,6 +1,9 @@
 #include "description/scene_checks.h"
 
+#include "astro/civil_time.h"
+
 #include <charconv>
+#include <cmath>
 
 namespace urbis {
 
@@ -37,6 +40,11 @@ std::optional<SceneProblem> firstSceneProblem(const SceneDescription& d) {
         return SceneProblem{"camera.geo", "--camera-geo", "excludes camera.position and camera.target (--camera)"};
     if (c.geo && s.osm.empty())
         return SceneProblem{"camera.geo", "--camera-geo", "needs a city imported from source.osm (--osm)"};
+    std::string timeError;
+    if (!d.astronomy.time.empty() && !parseIsoTime(d.astronomy.time, timeError))
+        return SceneProblem{"astronomy.time", "--time", "'" + d.astronomy.time + "': " + timeError};
+    if (d.astronomy.location && !(std::abs((*d.astronomy.location)[1]) <= 90.0))
+        return SceneProblem{"astronomy.location", "--location", "latitude must be in [-90, 90] degrees"};
     if (!wallTileSizeOf(d.geometry.wallTiles))
         return SceneProblem{"geometry.wall_tiles", "--wall-tiles",
                             "need 'whole' or SLOTSxFLOORS (e.g. 4x4), got '" + d.geometry.wallTiles + "'"};

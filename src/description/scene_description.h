@@ -64,6 +64,22 @@ struct SunDescription {
     Vec3f irradiance{3.3f, 3.1f, 2.8f};
 };
 
+/// The date, time and place that set the sun, the moon and the stars (docs/astronomy.md).
+struct AstronomyDescription {
+    /// ISO 8601 with a UTC offset or Z ("2024-06-21T20:30+02:00"); empty: no time (the sun from
+    /// SunDescription's angles, no moon, no stars).
+    std::string time;
+    /// LON, LAT in degrees; none: the OSM extract's centre (the import's projection origin), or
+    /// kDefaultLocation for the generated city.
+    std::optional<std::array<double, 2>> location;
+    /// With a time: the sun's elevation and azimuth come from it; false: from SunDescription (--sun).
+    bool sunFromTime = true;
+};
+
+/// Where the generated city stands: Prague's Old Town Square (LON, LAT degrees), where the thesis
+/// its facades come from was written.
+inline constexpr std::array<double, 2> kDefaultLocation{14.4213, 50.0875};
+
 /// Today's analytic sky (lights/sky.h): a zenith-to-horizon gradient above a constant ground.
 struct SkyDescription {
     Vec3f zenith = Sky{}.zenith;
@@ -115,6 +131,7 @@ struct SceneDescription {
     SourceDescription source;
     CameraDescription camera;
     SunDescription sun;
+    AstronomyDescription astronomy;
     SkyDescription sky;
     MaterialsDescription materials;
     GeometryDescription geometry;

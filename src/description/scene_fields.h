@@ -55,6 +55,11 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.number("angular_radius", d.sun.angularRadius, 0.01f, 20.0f);
         v.vec3("irradiance", d.sun.irradiance, 0.0f, 1e6f);
     });
+    v.object("astronomy", [&] {
+        v.text("time", d.astronomy.time);
+        v.optionalArray("location", d.astronomy.location, -180.0, 180.0);
+        v.boolean("sun_from_time", d.astronomy.sunFromTime);
+    });
     v.object("sky", [&] {
         v.vec3("zenith", d.sky.zenith, 0.0f, 1e6f);
         v.vec3("horizon", d.sky.horizon, 0.0f, 1e6f);

@@ -7,13 +7,14 @@
 
 namespace urbis {
 
-/// The device copies of a Scene's arrays; small records (sun, sky) travel by value in view().
+/// The device copies of a Scene's arrays; small records (sun, sky, moon and stars) travel by value in view().
 struct DeviceScene {
 #define URBIS_DEVICE_MEMBER(Type, name, key) DeviceBuffer<Type> name;
     URBIS_SCENE_ARRAYS(URBIS_DEVICE_MEMBER)
 #undef URBIS_DEVICE_MEMBER
     Sun sun;
     Sky sky;
+    NightSky night;
     LightListInfo lights;
 
     /// Device bytes the arrays of `scene` take.
@@ -26,6 +27,7 @@ struct DeviceScene {
 #undef URBIS_DEVICE_UPLOAD
         sun = scene.sun;
         sky = scene.sky;
+        night = scene.night;
         lights = scene.lights;
     }
 
@@ -39,7 +41,7 @@ struct DeviceScene {
     }
 
     /// What kernels read: the same SceneView the CPU backend gets, over device pointers.
-    SceneView view() const { return makeSceneView(*this, sun, sky, lights); }
+    SceneView view() const { return makeSceneView(*this, sun, sky, night, lights); }
 };
 
 } // namespace urbis

@@ -9,6 +9,7 @@
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "lights/mis.h"
+#include "lights/star_field.h"
 #include "scene/render_settings.h"
 
 namespace urbis {
@@ -47,8 +48,8 @@ struct BounceInfo {
 /// 7e-5 sr) has a light-sampling pdf thousands of times any BSDF's, where the power heuristic would
 /// give its light samples a weight of 1 to within (p_bsdf / p_sun)^2. So they count in full and a BSDF
 /// sample that finds the disk counts nothing (weights 1 and 0 sum to one as well): no power heuristic
-/// per sun sample or per BSDF sample that finds the disk.
-URBIS_HD inline bool misWeighs(LightKind kind) { return kind != LightKind::Sun; }
+/// per sun sample or per BSDF sample that finds the disk. The moon's disk is as small.
+URBIS_HD inline bool misWeighs(LightKind kind) { return kind != LightKind::Sun && kind != LightKind::Moon; }
 
 /// Weight of emission that a BSDF sample of `bounce` found, against `lightSamples` light samples
 /// that pick `light` (of kind `kind`) with `selectionPmf` and reach the same point with solid-angle pdf `pdf`.
@@ -144,6 +145,12 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                                                 sunPdf(scene.sun));
                 out.radiance += throughput * scene.sun.radiance * sunWeight;
             }
+            // The moon's disk, which camera rays see too, and the stars (lights/star_field.h).
+            if (sunContains(scene.night.moon, dir))
+                out.radiance += throughput * scene.night.moon.radiance *
+                                bsdfFoundWeight(bounce, LightKind::Moon, settings.lightSamples,
+                                                lightSelectionPmf(lights, settings.lightSampler, lights.moonLight), 0.0f);
+            out.radiance += throughput * nightSkyRadiance(scene.night.stars, dir);
             pathEnds = true;
         } else {
             const Material& material = scene.materials[hit.material];

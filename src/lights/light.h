@@ -18,17 +18,25 @@ struct LightSample {
     float distance = 3.0e38f; ///< to the point sampled; infinite lights: the largest float
 };
 
+/// The disk of a light of kind Sun or Moon: both are the sun's record (lights/sun_light.h).
+URBIS_HD inline const Sun& diskLight(const SceneView& scene, LightKind kind) {
+    return kind == LightKind::Moon ? scene.night.moon : scene.sun;
+}
+
 /// Samples `light` as seen from `from` with three uniform numbers. Returns false when it gives
 /// nothing there (a disabled sun, an edge-on surface, a reserved kind).
 URBIS_HD inline bool sampleLight(const SceneView& scene, const LightRecord& light, Vec3f from, float u0, float u1,
                                  float u2, LightSample& s) {
     switch (light.kind) {
     case LightKind::Sun:
-        if (!sunEnabled(scene.sun)) return false;
-        s.dir = sampleSunDirection(scene.sun, u1, u2);
-        s.radiance = scene.sun.radiance;
-        s.pdf = sunPdf(scene.sun);
+    case LightKind::Moon: {
+        const Sun& disk = diskLight(scene, light.kind);
+        if (!sunEnabled(disk)) return false;
+        s.dir = sampleSunDirection(disk, u1, u2);
+        s.radiance = disk.radiance;
+        s.pdf = sunPdf(disk);
         return true;
+    }
     case LightKind::Sky:
         s.dir = sampleSkyDirection(scene.lights.skyTable, u1, u2, s.pdf);
         s.radiance = skyRadiance(scene.sky, s.dir);
@@ -53,7 +61,10 @@ URBIS_HD inline float lightPdf(const SceneView& scene, const LightRecord& light,
                                float cosLight) {
     switch (light.kind) {
     case LightKind::Sun:
-        return sunEnabled(scene.sun) && sunContains(scene.sun, dir) ? sunPdf(scene.sun) : 0.0f;
+    case LightKind::Moon: {
+        const Sun& disk = diskLight(scene, light.kind);
+        return sunEnabled(disk) && sunContains(disk, dir) ? sunPdf(disk) : 0.0f;
+    }
     case LightKind::Sky:
         return skyDirectionPdf(scene.lights.skyTable, dir);
     case LightKind::EmissiveSurface:

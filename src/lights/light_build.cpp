@@ -120,11 +120,12 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
     BuiltLights lights;
     const double radius = sceneRadius(scene);
     const double disk = double(kPi) * radius * radius;
-    if (options.sun && sunEnabled(scene.sun)) {
-        lights.info.sunLight = uint32_t(lights.records.size());
-        const double solidAngle = 1.0 / double(sunPdf(scene.sun));
-        lights.records.push_back({LightKind::Sun, 0, float(disk * luminance(scene.sun.radiance) * solidAngle)});
-    }
+    // The sun and the moon: a disk's power is its radiance times its solid angle through `disk`.
+    const auto addDisk = [&](const Sun& light, LightKind kind, uint32_t& place) {
+        place = uint32_t(lights.records.size());
+        lights.records.push_back({kind, 0, float(disk * luminance(light.radiance) / double(sunPdf(light)))});
+    };
+    if (options.sun && sunEnabled(scene.sun)) addDisk(scene.sun, LightKind::Sun, lights.info.sunLight);
     if (options.sky && options.skyWidth > 0 && options.skyHeight > 0) {
         double integral = 0;
         std::vector<float> func =
@@ -142,6 +143,7 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
             lights.records.push_back({LightKind::Sky, 0, float(skyPower)});
         }
     }
+    if (options.moon && sunEnabled(scene.night.moon)) addDisk(scene.night.moon, LightKind::Moon, lights.info.moonLight);
     float area = 0;
     if (options.surfaces) addEmissiveSurfaces(scene, lights, area);
     else lights.lightOfMaterial.assign(scene.materials.size(), kNoLight);

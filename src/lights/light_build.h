@@ -1,5 +1,5 @@
 // Builds a scene's light list and tables on the host (Scene::lights), once its geometry, materials,
-// sun and sky are set: the sun and the sky where they shine, one EmissiveSurface per emitting
+// sun and sky are set: the sun, the moon and the sky where they shine, one EmissiveSurface per emitting
 // material of the triangles, each light's power, and the sky's importance table (light arrays of
 // scene_arrays.h, and Scene::lights beside them).
 #pragma once
@@ -10,6 +10,7 @@ namespace urbis {
 
 struct LightBuildOptions {
     bool sun = true, sky = true, surfaces = true;  ///< which kinds join the list (tests leave some out)
+    bool moon = true;                              ///< where it shines: above the horizon (NightSky::moon)
     uint32_t skyWidth = 128, skyHeight = 64;       ///< cells of the sky's table in azimuth and polar angle
     bool compensateSky = true;                     ///< the sky's table holds what exceeds its mean (light_build.cpp)
     /// The sky joins the list only where its (compensated) power is at least this share of the sun's

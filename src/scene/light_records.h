@@ -13,6 +13,7 @@ namespace urbis {
 enum class LightKind : uint32_t {
     Sun,              ///< SceneView::sun: a disk of directions
     Sky,              ///< SceneView::sky: the environment, importance-sampled from its radiance
+    Moon,             ///< SceneView::night.moon: a disk of directions, as the sun
     EmissiveSurface,  ///< LightsView::surfaces[index]: the triangles of one emitting material
     Point,            ///< reserved: street lamps (with an emission profile), not built yet
     Spot,             ///< reserved: spot lamps (with a cone and profile), not built yet
@@ -22,7 +23,7 @@ enum class LightKind : uint32_t {
 /// One light of the sampler's list.
 struct LightRecord {
     LightKind kind = LightKind::Sun;
-    uint32_t index = 0;  ///< into the array of its kind (0 for the sun and the sky)
+    uint32_t index = 0;  ///< into the array of its kind (0 for the sun, the moon and the sky)
     float power = 0;     ///< luminous flux in the renderer's units (lights/light_build.cpp says how)
 };
 
@@ -57,6 +58,7 @@ struct LightsView {
     uint32_t materialCount = 0;
     PiecewiseConstant2DView skyTable;             ///< over (u, v) of the sky's equal-area map (lights/sky_light.h)
     uint32_t sunLight = 0, skyLight = kNoLight;   ///< their places in records, or kNoLight
+    uint32_t moonLight = kNoLight;
 };
 
 } // namespace urbis

@@ -119,7 +119,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
     return scene;
 }
 
-SceneView Scene::view() const { return makeSceneView(*this, sun, sky, lights); }
+SceneView Scene::view() const { return makeSceneView(*this, sun, sky, night, lights); }
 
 SceneMemory Scene::memory() const {
     SceneMemory memory;

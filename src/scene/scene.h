@@ -39,6 +39,7 @@ struct Scene {
 #undef URBIS_SCENE_MEMBER
     Sun sun;
     Sky sky;
+    NightSky night;         ///< the moon and the stars
     LightListInfo lights;   ///< beside the light arrays, which buildLights (lights/light_build.h) fills from the rest
 
     /// Builds one BVH over the triangles of `mesh`, the tiles of the procedural `walls`

@@ -8,7 +8,7 @@ namespace urbis {
 
 struct LightListInfo {
     uint32_t skyNu = 0, skyNv = 0;          ///< the sky table's grid (lightsView's skyTable)
-    uint32_t sunLight = kNoLight, skyLight = kNoLight;
+    uint32_t sunLight = kNoLight, skyLight = kNoLight, moonLight = kNoLight;
     float powerIntegral = 0;                ///< of the lightPower table: kept here, since device tables are not read on the host
     bool built = false;                     ///< false: the view stands for the implicit {sun, sky}
 };
@@ -29,6 +29,7 @@ LightsView makeLightsView(const auto& arrays, const LightListInfo& info) {
     if (arrays.skyTable.size() != 0) v.skyTable = PiecewiseConstant2DView{arrays.skyTable.data(), info.skyNu, info.skyNv};
     v.sunLight = info.sunLight;
     v.skyLight = info.skyLight;
+    v.moonLight = info.moonLight;
     return v;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "scene/scene_arrays.h"
+#include "scene/night_sky.h"
 #include "scene/scene_lights.h"
 #include "scene/sky.h"
 #include "scene/sun.h"
@@ -20,6 +21,7 @@ struct SceneView {
     bool costlyLeaves = false;
     Sun sun;
     Sky sky;
+    NightSky night;                      ///< the moon (a disk like the sun) and the stars
     LightsView lights;                   ///< the light sampler's list and tables (not built: sun and sky)
 
     /// The first leaf slot of kind I.
@@ -28,7 +30,8 @@ struct SceneView {
 
 /// The view of a scene's arrays, host vectors or device buffers alike (anything with the members of
 /// scene_arrays.h, each with data() and size()).
-SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky, const LightListInfo& lights) {
+SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky, const NightSky& night,
+                        const LightListInfo& lights) {
     SceneView view;
 #define URBIS_VIEW_ARRAY(Type, name, key) view.name = {arrays.name.data(), uint32_t(arrays.name.size())};
     URBIS_SCENE_ARRAYS(URBIS_VIEW_ARRAY)
@@ -42,6 +45,7 @@ SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky, cons
     });
     view.sun = sun;
     view.sky = sky;
+    view.night = night;
     view.lights = makeLightsView(arrays, lights);
     return view;
 }
