@@ -1,6 +1,6 @@
 // One rule for "drawn at the surface" (atSurface): the roads' fitting, the bridges, the railways and the
-// lamps ask it alike. A bridge=yes way is a deck whatever its layer; any other way in a tunnel, covered,
-// underground or at a negative layer is not drawn.
+// lamps ask it alike. Nothing in a tunnel or underground is drawn; a bridge=yes way is a deck whatever
+// its layer, covered or not; any other way covered or at a negative layer is not drawn.
 #include "streets/bridge_mesher.h"
 #include "streets/lamp_placement.h"
 #include "streets/road_elevation.h"
@@ -27,6 +27,7 @@ constexpr SurfaceCase kCases[] = {
     {false, false, true, false, 0, false},   {false, false, false, true, 0, false},
     {true, false, false, false, 1, true},    {true, false, false, false, -1, true},
     {true, false, false, false, -3, true},   {true, false, true, false, 1, true},   // a covered bridge
+    {true, true, false, false, 0, false},    {true, false, false, true, -1, false}, // a bridge underground
 };
 
 template <class Way>
