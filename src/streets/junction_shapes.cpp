@@ -114,6 +114,11 @@ void measureGaps(Node& node, std::vector<double>& trimStart, std::vector<double>
         // In a junction only crossings ahead of the node count; wider gaps close round its back.
         g.inner = g.inner && g.angle < std::numbers::pi - kStraightGap && g.s >= 0 && g.u >= 0;
         g.outer = g.outer && g.angle < std::numbers::pi - kStraightGap && g.so >= 0 && g.uo >= 0;
+        // In a merged junction, neighbours whose edges cross behind where they leave it get no sidewalk
+        // corner: its straight border would run over the junction and the lots beside it. Their
+        // sidewalks stop with an end face instead.
+        if (length(i.origin) + length(j.origin) > 0 && !g.inner && g.angle < std::numbers::pi - kStraightGap)
+            g.corner = false;
         double& ti = trimOf(i, trimStart, trimEnd);
         double& tj = trimOf(j, trimStart, trimEnd);
         if (g.inner) ti = std::max(ti, g.s), tj = std::max(tj, g.u);
