@@ -37,7 +37,7 @@ LAYERS = {
     "geometry": 6,      # one intersector per primitive kind, the leaf dispatch over the kinds, traceScene
     "lights": 7,        # light sampling over the light records: light interface, light sampler, MIS
     "integrators": 8,   # the integrator interface, the path tracer, the AOV pass
-    "model": 9,         # the city model: buildings, parts, polygons, the reasons buildings were dropped
+    "model": 9,         # the city model: buildings, parts, polygons and their GEOS wrapper, the reasons buildings were dropped
     "osm": 10,          # OpenStreetMap import into the city model
     "layout": 10,       # procedurally generated cities as a city model
     "streets": 11,      # city model -> street meshes and records: roads, junctions, sidewalks, markings

@@ -80,6 +80,7 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "materials.window_glass.transmittance", "materials.window_glass.ior", "materials.lit_room",
         "materials.lit_room.emission", "materials.wall_colour_by_type", "materials.roof_colour_by_type",
         "geometry", "geometry.walls", "geometry.roofs", "geometry.lamps", "geometry.wall_tiles", "geometry.streets",
+        "geometry.traffic",
         "integrator", "integrator.kind", "integrator.spp", "integrator.seed", "integrator.max_depth",
         "integrator.rr_depth", "integrator.rr_survival", "integrator.light_sampler", "integrator.light_samples",
         "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers", "film.exr_float", "film.denoise"};

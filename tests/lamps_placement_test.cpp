@@ -4,6 +4,7 @@
 #include "model/polygon_ops.h"
 #include "osm/osm_import.h"
 #include "streets/lamp_placement.h"
+#include "streets/road_elevation.h"
 
 #include <gtest/gtest.h>
 
@@ -45,7 +46,7 @@ std::vector<Vec2d> junctionNodes(const std::vector<Road>& roads) {
     std::map<std::pair<double, double>, int> degree;
     for (const Road& r : roads) {
         if (r.highway == HighwayClass::Footway || r.highway == HighwayClass::Cycleway || r.highway == HighwayClass::Path ||
-            r.highway == HighwayClass::Steps || r.tunnel || r.underground || r.covered || r.layer < 0)
+            r.highway == HighwayClass::Steps || !atSurface(r))
             continue;
         for (size_t i = 0; i < r.centerline.size(); ++i)
             degree[{r.centerline[i].x, r.centerline[i].y}] += i == 0 || i + 1 == r.centerline.size() ? 1 : 2;

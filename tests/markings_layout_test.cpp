@@ -359,3 +359,39 @@ TEST(MarkingsLayout, DashesRunOnAcrossTwoSegments) {
         EXPECT_NEAR(extent(line[i]), kDashLength, 2 * kStep) << "dash " << i;
     }
 }
+
+TEST(MarkingsLayout, LeftHandTrafficMirrorsTheStopLines) {
+    // Traffic keeping left arrives at the end on the left half and at the start on the right half.
+    const Scene scene = roadScene({straightSegment(kMarkStopAtEnd | kMarkStopAtStart | kMarkLeftHand, 30.0f)});
+    const float middleEnd = 30.0f - kStopLineSetback - 0.5f * kStopLineWidth;
+    const std::vector<Stretch> atEnd = painted(runsAcross(scene, middleEnd, -3.5f, 3.5f), kWhite);
+    ASSERT_EQ(atEnd.size(), 1u);
+    EXPECT_NEAR(atEnd[0].from, 0.0f, 2 * kStep);
+    EXPECT_NEAR(atEnd[0].to, 3.5f, 2 * kStep);
+    const std::vector<Stretch> atStart = painted(runsAcross(scene, kStopLineSetback + 0.2f, -3.5f, 3.5f), kWhite);
+    ASSERT_EQ(atStart.size(), 1u);
+    EXPECT_NEAR(atStart[0].from, -3.5f, 2 * kStep);
+    EXPECT_NEAR(atStart[0].to, 0.0f, 2 * kStep);
+}
+
+TEST(MarkingsLayout, LeftHandTrafficMirrorsUnevenLanesAndTheOneWayYellowEdge) {
+    // Two lanes forward, one back, on a 10.5 m road: the dividers lie among the forward lanes, on the left.
+    RoadSegment s = straightSegment(kMarkCentreLine | kMarkLaneDividers | kMarkLeftHand);
+    s.halfWidth = 5.25f;
+    s.lanesForward = 2;
+    s.lanesBackward = 1;
+    s.centreOffset = -1.75f;   // the forward share (7 m) left of the centre line
+    const Scene scene = roadScene({s});
+    const std::vector<Stretch> across = painted(runsAcross(scene, 1.5f, -5.25f, 5.25f), kWhite);
+    ASSERT_EQ(across.size(), 2u);
+    EXPECT_NEAR(0.5f * (across[0].from + across[0].to), -1.75f, kStep);   // the centre line
+    EXPECT_NEAR(0.5f * (across[1].from + across[1].to), 1.75f, kStep);    // the forward lanes' divider
+
+    RoadSegment oneWay = straightSegment(kMarkEdgeLines | kMarkAmerican | kMarkLeftHand);
+    oneWay.centreOffset = -oneWay.halfWidth;
+    oneWay.lanesBackward = 0;
+    const Scene edges = roadScene({oneWay});
+    const float line = 3.5f - kEdgeLineInset - 0.5f * kEdgeLineWidth;
+    EXPECT_EQ(materialAt(edges, 5.0f, -line), kYellow);
+    EXPECT_EQ(materialAt(edges, 5.0f, line), kWhite);
+}

@@ -160,9 +160,11 @@ TEST(StreetsJunction, GeneratedCityJunctionsAreWatertight) {
     std::cout << leaky << " of " << junctions << " junctions with a ray on a sidewalk or two surfaces\n";
     EXPECT_GE(junctions, 100u);
     EXPECT_EQ(ground, 0u) << "no ray over a junction reaches the ground";
-    // 27 of 286 (9.4 %) are not: a neighbouring road's surface (a sidewalk, or a second plane) reaches
-    // over them, where an arterial (a diagonal or the ring) crosses the grid near another junction in
-    // the cases looked at. An open gap of issue 19 (the OSM extracts' junctions all pass), held at
-    // that share; no ray reaches the ground.
-    EXPECT_LE(double(leaky), 0.10 * double(junctions));
+    // 10 of 266 (3.8 %) are not, all of them junctions merged where an arterial (a diagonal or the
+    // ring) crosses the grid 20-25 m from a grid junction: the three junctions' trims overlap, so they
+    // merge into one (before the merge took roads of any length, 27 of 286 had the neighbours' surfaces
+    // over them). In the merged ones 1-2 % of the rays find a sidewalk or a second plane: where two
+    // neighbouring ends' edges do not cross ahead of both, the border runs straight between their
+    // corners, across the corner of the other's corridor. Held at 4 %; no ray reaches the ground.
+    EXPECT_LE(double(leaky), 0.04 * double(junctions));
 }

@@ -5,6 +5,7 @@
 // and the time it takes on SF.
 #include "streets_network_support.h"
 
+#include "layout/city_layout.h"
 #include "osm/osm_import.h"
 #include "scene/road_segment.h"
 
@@ -183,7 +184,7 @@ namespace {
 
 struct Extract {
     const char* name;
-    std::string path;
+    std::string path;   ///< empty: the generated city
     bool required;
     double overShare;   ///< share of roads tolerated over a building by more than kOverlapTolerance
 };
@@ -196,17 +197,20 @@ class NetworkExtract : public testing::TestWithParam<Extract> {};
 
 /// Tolerated plan overlap of one road's surfaces (carriageway, junctions it names, sidewalks) with
 /// building footprints (those starting at the ground, as fitting sees them): 1 cm^2. None may pass it
-/// on the osmnx extracts; on SF 1 % do (sidewalk corners and mitres at buildings' corners, where a
-/// trim was capped), so the test holds that share at 1.5 %.
+/// on the osmnx extracts; on SF 117 of 12,755 do (0.9 %: sidewalk corners and mitres at buildings'
+/// corners, where a trim was capped), held at 1.5 %; in the generated city (3,000 buildings) 15 of 671
+/// (2.2 %, the worst by 56 m^2), held at 3 %.
 constexpr double kOverlapTolerance = 1e-4;
 
 TEST_P(NetworkExtract, RoadsDoNotOverlapBuildings) {
     const Extract& e = GetParam();
-    if (!std::filesystem::exists(e.path)) {
+    if (!e.path.empty() && !std::filesystem::exists(e.path)) {
         ASSERT_FALSE(e.required) << e.path << " is missing";
         GTEST_SKIP() << e.path << " not found, skipping";
     }
-    const CityModel city = importOsm(e.path, {});
+    LayoutParams generated;
+    generated.buildings = 3000;   // big enough for the river, its bridges, parks and arterial junctions
+    const CityModel city = e.path.empty() ? generateCity(generated) : importOsm(e.path, {});
     // Wall time depends on what else the machine runs: the processor time is the figure to compare.
     const auto begin = std::chrono::steady_clock::now();
     const std::clock_t cpuBegin = std::clock();
@@ -266,7 +270,8 @@ TEST_P(NetworkExtract, RoadsDoNotOverlapBuildings) {
 
 INSTANTIATE_TEST_SUITE_P(
     Streets, NetworkExtract,
-    testing::Values(Extract{"Village", std::string(URBIS_OSMNX_DATA) + "/planet_10.068,48.135_10.071,48.137.osm", true, 0.0},
+    testing::Values(Extract{"Generated", "", true, 0.03},
+                    Extract{"Village", std::string(URBIS_OSMNX_DATA) + "/planet_10.068,48.135_10.071,48.137.osm", true, 0.0},
                     Extract{"WestOakland", std::string(URBIS_OSMNX_DATA) + "/West-Oakland.osm.bz2", true, 0.0},
                     Extract{"SanFrancisco", std::string(URBIS_SHARED_DATA) + "/sf_downtown_2023.osm.pbf", false, 0.015}));
 

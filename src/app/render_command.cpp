@@ -115,6 +115,8 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     meshOptions.materials = d.materials.city;
     meshOptions.memoryLimit = memoryLimit;
     meshOptions.streets = d.geometry.streets;
+    if (d.geometry.traffic != "auto")
+        meshOptions.traffic = d.geometry.traffic == "left" ? TrafficSide::Left : TrafficSide::Right;
     CityMesh mesh;
     CelestialLights celestial;
     {

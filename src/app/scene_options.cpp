@@ -146,6 +146,11 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
                                               FailureKind::Usage);
                          d.geometry.wallTiles = text;
                      }));
+    if (CLI::Option* traffic = bind(cmd, "--traffic", v.geometry.traffic,
+                                    "The side traffic keeps (lanes, stop lines): auto (by the city's place), right or left",
+                                    [](SceneDescription& d, const std::string& s) { d.geometry.traffic = s; }))
+        traffic->check(CLI::IsMember(std::vector<std::string>(std::begin(kTrafficSides), std::end(kTrafficSides))))
+            ->capture_default_str();
     if (wanted("--no-streets")) {
         CLI::Option* flag = cmd.add_flag("--no-streets", noStreets_, "Buildings on the bare ground: no roads, sidewalks, ground cover, water or lamps");
         overrides_.emplace_back(flag, [](SceneDescription& d) { d.geometry.streets = false; });

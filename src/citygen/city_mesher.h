@@ -11,8 +11,10 @@
 #include "scene/material.h"
 #include "scene/lamp_record.h"
 #include "scene/road_segment.h"
+#include "streets/traffic_side.h"
 
 #include <map>
+#include <optional>
 #include <string>
 
 namespace urbis {
@@ -29,6 +31,8 @@ struct CityMeshOptions {
     GeometryModes geometry;   ///< walls=plain: each building a closed mass model (every edge shared)
     CityMaterials materials;
     bool streets = true;      ///< roads, sidewalks, ground cover, lamps (streets/); false: buildings on the bare ground
+    /// The side traffic keeps (lanes, stop lines); nullopt: by the city's place (trafficSideOf).
+    std::optional<TrafficSide> traffic;
     /// Bytes the triangle twin may take to build; 0: the memory available now.
     size_t memoryLimit = 0;
 };

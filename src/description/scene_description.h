@@ -101,6 +101,7 @@ struct GeometryDescription {
     GeometryModes modes;
     std::string wallTiles = "whole";   ///< "whole" or "SLOTSxFLOORS" (wallTileSizeOf)
     bool streets = true;               ///< roads, sidewalks, ground cover, water and lamps; false: buildings on the bare ground
+    std::string traffic = "auto";      ///< the side traffic keeps: "auto" (by the city's place), "right" or "left"
 };
 
 /// The integrator and its parameters. `lightSampler` picks among the lights ("uniform" or
@@ -142,5 +143,6 @@ struct SceneDescription {
 /// The choices of IntegratorDescription::kind and ::lightSampler.
 inline constexpr const char* kIntegratorKinds[] = {"path"};
 inline constexpr const char* kLightSamplers[] = {"uniform", "power"};
+inline constexpr const char* kTrafficSides[] = {"auto", "right", "left"};
 
 } // namespace urbis

@@ -82,6 +82,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.enumeration("lamps", d.geometry.modes.lamps, kRepresentationNames);
         v.text("wall_tiles", d.geometry.wallTiles);
         v.boolean("streets", d.geometry.streets);
+        v.choice("traffic", d.geometry.traffic, std::span(kTrafficSides));
     });
     v.object("integrator", [&] {
         v.choice("kind", d.integrator.kind, std::span(kIntegratorKinds));

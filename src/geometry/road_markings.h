@@ -34,7 +34,8 @@ enum RoadPaint : uint32_t { kNoPaint = 0, kWhitePaint = 1, kYellowPaint = 2 };
 URBIS_HD inline bool withinOf(float x, float centre, float halfWidth) { return fabsf(x - centre) <= halfWidth; }
 
 /// The paint at `along` metres from the segment's start and `across` metres left of its centreline
-/// (negative: right). Traffic keeps right: the forward lanes lie right of the centre line. Dashes run
+/// (negative: right). Traffic keeps right, the forward lanes right of the centre line, unless
+/// kMarkLeftHand mirrors them (and the stop lines, which lie across the arriving lanes). Dashes run
 /// on the road's distance (RoadSegment::distance + along), so they continue across segments; a zebra
 /// paints the half of its band that lies on this segment and hides the other lines there; nothing is
 /// painted beyond the segment or the carriageway.
@@ -57,7 +58,8 @@ URBIS_HD inline RoadPaint roadPaintAt(const RoadSegment& s, float along, float a
     const float period = kDashLength + (american ? kDashGapAmericas : kDashGapEurope);
     const float d = s.distance + along;
     const bool dash = d - floorf(d / period) * period < kDashLength;
-    const bool right = across < c;   // among the forward lanes
+    const bool leftHand = (m & kMarkLeftHand) != 0;
+    const bool forward = (across < c) != leftHand;   // among the forward lanes
 
     const bool dashed = (m & kMarkCentreDashed) != 0;
     const float centreOffset = !dashed && american ? 0.5f * (kDoubleLineGap + kLineWidth) : 0.0f;
@@ -66,22 +68,23 @@ URBIS_HD inline RoadPaint roadPaintAt(const RoadSegment& s, float along, float a
 
     // Lanes of one direction share its side of the centre line equally, dividers between them: in
     // lane widths from the centre line, at every whole number but 0 and `lanes`.
-    const float lanes = fmaxf(float(right ? s.lanesForward : s.lanesBackward), 1.0f);
-    const float side = right ? c + hw : hw - c, x = fabsf(across - c) * lanes / side, k = rintf(x);
+    const float lanes = fmaxf(float(forward ? s.lanesForward : s.lanesBackward), 1.0f);
+    const float side = across < c ? c + hw : hw - c, x = fabsf(across - c) * lanes / side, k = rintf(x);
     const bool divider = (m & kMarkLaneDividers) && dash && k >= 1.0f && k < lanes &&
                          fabsf(x - k) * side <= 0.5f * kLineWidth * lanes;
 
     const bool edge = (m & kMarkEdgeLines) &&
                       withinOf(fabsf(across), hw - kEdgeLineInset - 0.5f * kEdgeLineWidth, 0.5f * kEdgeLineWidth);
-    // A one-way roadway's left edge line is yellow in the Americas (MUTCD 3A.05).
-    const bool yellowEdge = edge && american && s.lanesBackward == 0 && across > 0.0f;
+    // A one-way roadway's left edge line is yellow in the Americas (MUTCD 3A.05): the side facing
+    // the other direction, its right where traffic keeps left.
+    const bool yellowEdge = edge && american && s.lanesBackward == 0 && (across > 0.0f) != leftHand;
 
     // Stop lines across the lanes arriving at an end: the forward lanes at the end, the backward
     // ones at the start; behind the zebra where the end has one.
     const float stopEnd = s.length - kStopLineSetback - (zebraEnd ? zebraHalf : 0.0f) - 0.5f * kStopLineWidth;
     const float stopStart = kStopLineSetback + (zebraStart ? zebraHalf : 0.0f) + 0.5f * kStopLineWidth;
-    const bool stop = (m & (right ? kMarkStopAtEnd : kMarkStopAtStart)) &&
-                      withinOf(along, right ? stopEnd : stopStart, 0.5f * kStopLineWidth);
+    const bool stop = (m & (forward ? kMarkStopAtEnd : kMarkStopAtStart)) &&
+                      withinOf(along, forward ? stopEnd : stopStart, 0.5f * kStopLineWidth);
 
     if (centre) return (m & kMarkCentreYellow) ? kYellowPaint : kWhitePaint;
     if (yellowEdge) return kYellowPaint;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "model/city_model.h"
-#include "osm/geos_polygon.h"
+#include "model/geos_polygon.h"
 
 #include <map>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include "model/polygon_ops.h"
 #include "osm/building_parts.h"
-#include "osm/geos_polygon.h"
+#include "model/geos_polygon.h"
 
 #include <algorithm>
 #include <cmath>

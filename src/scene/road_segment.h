@@ -22,6 +22,7 @@ enum RoadMarking : uint32_t {
     kMarkZebraAtStart = 1u << 7,  ///< zebra stripes of a crossing centred on the segment's start
     kMarkZebraAtEnd = 1u << 8,    ///< ... on its end
     kMarkAmerican = 1u << 9,      ///< the MUTCD's layout: 3 m / 9 m dashes, a solid centre line doubled
+    kMarkLeftHand = 1u << 10,     ///< traffic keeps left: the forward lanes lie left of the centre line
 };
 
 struct RoadSegment {
@@ -31,8 +32,9 @@ struct RoadSegment {
     float distance = 0;       ///< m along the road's centreline at `start`: dashes run on across segments
     float halfWidth = 0;      ///< m, half the carriageway
     float centreOffset = 0;   ///< m across (left of `direction` positive) of the line between the directions
-    uint8_t lanesForward = 1; ///< lanes in `direction`, right of the centre line
-    uint8_t lanesBackward = 1;///< lanes against it, left of the centre line; 0 on a one-way road (centreOffset = halfWidth)
+    uint8_t lanesForward = 1; ///< lanes in `direction`, right of the centre line (left with kMarkLeftHand)
+    uint8_t lanesBackward = 1;///< lanes against it, on the other side; 0 on a one-way road (centreOffset = halfWidth,
+                              ///< -halfWidth with kMarkLeftHand)
     uint16_t spare = 0;
     uint32_t markings = 0;    ///< RoadMarking bits
     uint32_t object = 0;      ///< the road's object id (ID AOV)

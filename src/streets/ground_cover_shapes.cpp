@@ -1,5 +1,7 @@
 #include "streets/ground_cover_shapes.h"
 
+#include "model/geos_polygon.h"
+
 #include <geos_c.h>
 
 #include <cmath>
@@ -16,16 +18,6 @@ bool usable(const Ring& ring) {
     for (const Vec2d p : ring)
         if (!(std::fabs(p.x) <= CoverShapes::kMaxCoordinate && std::fabs(p.y) <= CoverShapes::kMaxCoordinate)) return false;
     return true;
-}
-
-/// A closed GEOS ring (the closing point repeated) from a ring that leaves it implicit.
-GEOSGeometry* closedRing(GEOSContextHandle_t ctx, const Ring& ring) {
-    std::vector<double> xy;
-    xy.reserve(2 * ring.size() + 2);
-    for (const Vec2d p : ring) xy.insert(xy.end(), {p.x, p.y});
-    xy.insert(xy.end(), {ring.front().x, ring.front().y});
-    GEOSCoordSequence* sequence = GEOSCoordSeq_copyFromBuffer_r(ctx, xy.data(), ring.size() + 1, 0, 0);
-    return sequence ? GEOSGeom_createLinearRing_r(ctx, sequence) : nullptr;
 }
 
 /// The polygonal parts of `g` (taken over) as one geometry: `g` itself when it is a polygon or a
@@ -141,11 +133,11 @@ CoverShapes::~CoverShapes() {
 CoverShapes::Added CoverShapes::add(const Polygon& polygon) {
     const GEOSContextHandle_t ctx = handle_;
     if (!usable(polygon.outer)) return Added::Degenerate;
-    GEOSGeometry* shell = closedRing(ctx, polygon.outer);
+    GEOSGeometry* shell = geosRing(ctx, polygon.outer);
     if (!shell) return Added::Degenerate;
     std::vector<GEOSGeometry*> holes;
     for (const Ring& hole : polygon.holes) {
-        GEOSGeometry* ring = usable(hole) ? closedRing(ctx, hole) : nullptr;
+        GEOSGeometry* ring = usable(hole) ? geosRing(ctx, hole) : nullptr;
         if (ring) holes.push_back(ring);
         else ++holesSkipped;
     }

@@ -27,10 +27,11 @@ constexpr double kKeptShare = 0.1;
 /// A trim reaches at most this many of the widest corridor halves at its node: crossings of nearly
 /// parallel edges farther out are left out (the border runs straight) rather than make a spike.
 constexpr double kMaxTrimHalves = 3.0;
-/// Junctions merge over a road between them that their trims leave shorter than this (m)...
+/// Junctions merge over a road between them that their trims leave shorter than this (m), however
+/// long it is: trims scaled down to fit would leave each junction's border short of its neighbours'
+/// edges, and the roads' surfaces over the junctions (where an arterial crosses the grid near one of
+/// its junctions, the three junctions' trims overlap).
 constexpr double kMinKept = 2.0;
-/// ... and that is at most this long (m).
-constexpr double kMaxMergedRoad = 12.0;
 /// A path cut at a carriageway keeps this far from its corridor (m); crossing it at a shallow angle
 /// takes at most 1 / kMinPathSine times the corridor.
 constexpr double kPathClearance = 0.1, kMinPathSine = 0.35;
@@ -87,7 +88,9 @@ void measureGaps(Node& node, std::vector<double>& trimStart, std::vector<double>
             const Vec2d chord = pointAlong(e.line, std::min(kChordLength, 0.5 * e.length), along) - e.origin;
             if (length(chord) > 0) e.d = chord * (1.0 / length(chord)), e.n = perpLeft(e.d);
         }
-        const Vec2d ahead = onEdge(e, 1.0, 0.0);
+        // Sorted by direction: in a merged junction an end may leave 20 m from the middle, and the
+        // point 1 m along it would sort by where it leaves, not where it goes.
+        const Vec2d ahead = onEdge(e, 1.0 + 4.0 * length(e.origin), 0.0);
         e.angle = std::atan2(ahead.y, ahead.x);
     }
     std::sort(node.ends.begin(), node.ends.end(), [](const NodeEnd& a, const NodeEnd& b) {
@@ -111,6 +114,11 @@ void measureGaps(Node& node, std::vector<double>& trimStart, std::vector<double>
         // In a junction only crossings ahead of the node count; wider gaps close round its back.
         g.inner = g.inner && g.angle < std::numbers::pi - kStraightGap && g.s >= 0 && g.u >= 0;
         g.outer = g.outer && g.angle < std::numbers::pi - kStraightGap && g.so >= 0 && g.uo >= 0;
+        // In a merged junction, neighbours whose edges cross behind where they leave it get no sidewalk
+        // corner: its straight border would run over the junction and the lots beside it. Their
+        // sidewalks stop with an end face instead.
+        if (length(i.origin) + length(j.origin) > 0 && !g.inner && g.angle < std::numbers::pi - kStraightGap)
+            g.corner = false;
         double& ti = trimOf(i, trimStart, trimEnd);
         double& tj = trimOf(j, trimStart, trimEnd);
         if (g.inner) ti = std::max(ti, g.s), tj = std::max(tj, g.u);
@@ -163,7 +171,7 @@ void mergeCloseJunctions(const std::vector<Road>& roads, const std::vector<doubl
     for (uint32_t r = 0; r < roads.size(); ++r) {
         if (consumed[r] || isPath(roads[r].highway)) continue;
         const auto [a, b] = nodesOf(r);
-        if (a == b || nodes[a].ends.size() < 3 || nodes[b].ends.size() < 3 || lengths[r] > kMaxMergedRoad) continue;
+        if (a == b || nodes[a].ends.size() < 3 || nodes[b].ends.size() < 3) continue;
         if (trimStart[r] + trimEnd[r] <= std::min(lengths[r] * (1.0 - kKeptShare), lengths[r] - kMinKept)) continue;
         const uint32_t ra = rootOf(parent, a), rb = rootOf(parent, b);
         if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "model/city_model.h"
+#include "streets/at_surface.h"
 
 #include <bit>
 #include <cstdint>
@@ -29,12 +30,6 @@ inline constexpr double kMaxRampSlope = 0.06;
 /// Metres a bridge's deck lies above the ground away from its ramps: layer 0 bridges (over water or a
 /// railway) 5 m, layer 1 (and below) 6 m, each layer above 6 m more.
 float bridgeClearance(int layer);
-
-/// Whether a road or a railway is drawn at the surface at all (tunnels and the like are not).
-template <class Way>
-bool atSurface(const Way& w) {
-    return !w.tunnel && !w.covered && !w.underground && w.layer >= 0;
-}
 
 /// One centerline as the elevation sees it: its points, whether it is a bridge at some layer, and
 /// whether it is drawn at the surface (a ground way that a bridge crossing it must clear).

@@ -2,6 +2,7 @@
 
 #include "model/cell_grid.h"
 #include "model/polygon_ops.h"
+#include "streets/at_surface.h"
 #include "streets/street_network_plane.h"
 
 #include <algorithm>
@@ -32,8 +33,6 @@ constexpr double kParallelCosine = 0.8, kSidewalkReach = 10.0, kSidewalkShare = 
 constexpr double kPassageHeight = 2.5;
 /// Coordinates beyond this (m) are bad input.
 constexpr double kHugeCoordinate = 1.0e7;
-
-bool drawnAtSurface(const Road& r) { return !r.tunnel && !r.covered && !r.underground && (r.layer >= 0 || r.bridge); }
 
 /// Defaults by class for an untagged `sidewalk` in town: both sides on streets with houses along them.
 bool sidewalksByClass(HighwayClass h) {
@@ -242,7 +241,7 @@ struct MappedSidewalks {
 
     explicit MappedSidewalks(const std::vector<Road>& roads) {
         for (const Road& r : roads) {
-            if (r.footway != FootwayKind::Sidewalk || !drawnAtSurface(r)) continue;
+            if (r.footway != FootwayKind::Sidewalk || !atSurface(r)) continue;
             for (size_t i = 0; i + 1 < r.centerline.size(); ++i) {
                 const Vec2d a = r.centerline[i], b = r.centerline[i + 1];
                 if (!(std::fabs(a.x) + std::fabs(a.y) + std::fabs(b.x) + std::fabs(b.y) < kHugeCoordinate)) continue;
@@ -347,7 +346,7 @@ std::vector<Road> fitRoads(const CityModel& city, std::map<std::string, uint64_t
     uint64_t cut = 0;
     for (uint32_t i = 0; i < city.roads.size(); ++i) {
         const Road& r = city.roads[i];
-        if (!drawnAtSurface(r)) {
+        if (!atSurface(r)) {
             ++dropped["road_not_at_surface"];
             continue;
         }

@@ -21,6 +21,7 @@ struct StreetOptions {
     uint32_t firstMaterial = 0;   ///< index of StreetMaterial 0 in the scene's materials
     uint32_t firstObject = 1;     ///< object id of the first street object (ids after the buildings')
     bool americanMarkings = false;///< yellow centre lines (the Americas); white elsewhere
+    bool leftHandTraffic = false; ///< traffic keeps left (streets/traffic_side.h): lanes and stop lines mirrored
 };
 
 struct StreetMesh {

@@ -295,10 +295,13 @@ private:
         backward = std::clamp(backward, 0, 255);
         s.lanesForward = uint8_t(forward);
         s.lanesBackward = uint8_t(backward);
-        // Forward lanes lie right of the line between the directions, backward ones left of it.
+        // Forward lanes lie right of the line between the directions, backward ones left of it; the
+        // other way round where traffic keeps left.
         const int lanes = std::max(forward + backward, 1);
-        s.centreOffset = s.halfWidth * (2.0f * float(forward) / float(lanes) - 1.0f);
+        const float rightShare = 2.0f * float(forward) / float(lanes) - 1.0f;
+        s.centreOffset = s.halfWidth * (options_.leftHandTraffic ? -rightShare : rightShare);
         s.markings = markings;
+        if (markings != 0 && options_.leftHandTraffic) s.markings |= kMarkLeftHand;
         if (markings != 0) {
             if (stopAtStart) s.markings |= kMarkStopAtStart;
             if (stopAtEnd) s.markings |= kMarkStopAtEnd;

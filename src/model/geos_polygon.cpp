@@ -1,4 +1,4 @@
-#include "osm/geos_polygon.h"
+#include "model/geos_polygon.h"
 
 #include "model/polygon_ops.h"
 
@@ -19,19 +19,10 @@ struct GeometryDeleter {
 };
 using GeometryPtr = std::unique_ptr<GEOSGeometry, GeometryDeleter>;
 
-GEOSGeometry* toGeosRing(Handle ctx, const Ring& ring) {
-    std::vector<double> xy;
-    xy.reserve(2 * ring.size() + 2);
-    for (const Vec2d p : ring) xy.insert(xy.end(), {p.x, p.y});
-    xy.insert(xy.end(), {ring.front().x, ring.front().y});
-    GEOSCoordSequence* seq = GEOSCoordSeq_copyFromBuffer_r(ctx, xy.data(), ring.size() + 1, 0, 0);
-    return GEOSGeom_createLinearRing_r(ctx, seq);
-}
-
 GeometryPtr toGeos(Handle ctx, const Polygon& polygon) {
-    GEOSGeometry* shell = toGeosRing(ctx, polygon.outer);
+    GEOSGeometry* shell = geosRing(ctx, polygon.outer);
     std::vector<GEOSGeometry*> holes;
-    for (const Ring& hole : polygon.holes) holes.push_back(toGeosRing(ctx, hole));
+    for (const Ring& hole : polygon.holes) holes.push_back(geosRing(ctx, hole));
     return GeometryPtr(GEOSGeom_createPolygon_r(ctx, shell, holes.data(), unsigned(holes.size())),
                        GeometryDeleter{ctx});
 }
@@ -56,6 +47,15 @@ Polygon fromGeos(Handle ctx, const GEOSGeometry* polygon) {
 }
 
 } // namespace
+
+GEOSGeometry* geosRing(GEOSContextHandle_t ctx, const Ring& ring) {
+    std::vector<double> xy;
+    xy.reserve(2 * ring.size() + 2);
+    for (const Vec2d p : ring) xy.insert(xy.end(), {p.x, p.y});
+    xy.insert(xy.end(), {ring.front().x, ring.front().y});
+    GEOSCoordSequence* sequence = GEOSCoordSeq_copyFromBuffer_r(ctx, xy.data(), ring.size() + 1, 0, 0);
+    return sequence ? GEOSGeom_createLinearRing_r(ctx, sequence) : nullptr;
+}
 
 GeosContext::GeosContext() : handle_(GEOS_init_r()) {}
 

@@ -1,4 +1,5 @@
-// Polygon validity and overlap through GEOS (thread-safe C API, one context per import).
+// Polygon validity, clipping and overlap through GEOS (thread-safe C API, one context per user), and the
+// one conversion of a ring into GEOS that the importer and the ground cover share.
 #pragma once
 
 #include "model/city_model.h"
@@ -6,8 +7,14 @@
 #include <vector>
 
 struct GEOSContextHandle_HS; // geos_c.h's context type, kept out of this header
+struct GEOSGeom_t;           // geos_c.h's geometry type
 
 namespace urbis {
+
+/// A closed GEOS linear ring of `ring` (local metres; the closing point, which a Ring leaves implicit,
+/// repeated), owned by the caller; null where GEOS refuses the points. The one conversion into GEOS
+/// for the importer's polygons and the ground cover's.
+GEOSGeom_t* geosRing(GEOSContextHandle_HS* ctx, const Ring& ring);
 
 /// What `GeosContext::makeValid` found.
 enum class Validity { Valid, Repaired, Invalid };
