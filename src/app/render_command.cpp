@@ -114,6 +114,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     meshOptions.materials = d.materials.city;
     meshOptions.memoryLimit = memoryLimit;
     meshOptions.streets = d.geometry.streets;
+    meshOptions.hour = hourOf(d);
     CityMesh mesh;
     {
         auto t0 = Clock::now();

@@ -5,6 +5,8 @@
 #include "osm/geo_projection.h"
 #include "scene/camera_framing.h"
 
+#include <cmath>
+
 namespace urbis {
 
 LayoutParams layoutParamsOf(const SourceDescription& source) {
@@ -40,6 +42,13 @@ void applyColourOverrides(const MaterialsDescription& materials, CityModel& city
 }
 
 Sun sunOf(const SunDescription& sun) { return makeSun(sun.elevation, sun.azimuth, sun.angularRadius, sun.irradiance); }
+
+float hourOf(const SceneDescription& d) {
+    if (d.lights.hour >= 0.0f) return d.lights.hour;
+    if (d.sun.elevation >= 0.0f) return 12.0f;
+    const float azimuth = std::fmod(std::fmod(d.sun.azimuth, 360.0f) + 360.0f, 360.0f);
+    return azimuth >= 180.0f ? 21.0f : 5.0f;
+}
 
 Sky skyOf(const SkyDescription& sky) { return Sky{sky.zenith, sky.horizon, sky.ground, sky.exponent}; }
 
