@@ -50,14 +50,14 @@ URBIS_HD inline float lampProfileIntegral(LampShape shape) {
 }
 
 /// Intensity (renderer units, radiance x m^2) that `lamp` sends towards unit direction `out`.
-URBIS_HD inline Vec3f lampIntensity(const LampLight& lamp, Vec3f out) {
+URBIS_HD inline Vec3f lampIntensity(const LampEmitter& lamp, Vec3f out) {
     return lamp.intensity * lampProfile(lamp.shape, -out.y);
 }
 
 /// Area (m^2) of the lamp's glass projected along unit direction `out`: a disc facing down (cobra,
 /// cone, flat), a sphere (globe), a lantern's glass as a cylinder of its mean radius with its
 /// bottom disc.
-URBIS_HD inline float lampGlassProjectedArea(const LampLight& lamp, Vec3f out) {
+URBIS_HD inline float lampGlassProjectedArea(const LampEmitter& lamp, Vec3f out) {
     const float r = lamp.glassRadius, disc = kPi * r * r, down = -out.y;
     switch (lamp.shape) {
     case LampShape::Globe: return disc;
@@ -72,15 +72,15 @@ URBIS_HD inline float lampGlassProjectedArea(const LampLight& lamp, Vec3f out) {
 /// Radiance of the lamp's glass seen along -out (leaving it along unit `out`): the intensity
 /// towards `out` over the glass's projected area, so that the glass seen from afar carries the
 /// point's intensity.
-URBIS_HD inline Vec3f lampGlassRadiance(const LampLight& lamp, Vec3f out) {
+URBIS_HD inline Vec3f lampGlassRadiance(const LampEmitter& lamp, Vec3f out) {
     const float area = lampGlassProjectedArea(lamp, out);
     return area > 0.0f ? lampIntensity(lamp, out) / area : Vec3f{};
 }
 
 /// The lamp seen from `from`: the unit direction to it, the irradiance it sends there across a
 /// surface facing it (`radiance`, with pdf 1: a delta light) and the distance its shadow ray
-/// runs, which stops at the glass (LampLight::clearance). False where nothing reaches `from`.
-URBIS_HD inline bool sampleLampLight(const LampLight& lamp, Vec3f from, Vec3f& dir, Vec3f& radiance, float& distance,
+/// runs, which stops at the glass (LampEmitter::clearance). False where nothing reaches `from`.
+URBIS_HD inline bool sampleLampLight(const LampEmitter& lamp, Vec3f from, Vec3f& dir, Vec3f& radiance, float& distance,
                                      float& pdf) {
     const Vec3f toLamp = lamp.position - from;
     const float d2 = dot(toLamp, toLamp), d = sqrtf(d2);
@@ -95,7 +95,7 @@ URBIS_HD inline bool sampleLampLight(const LampLight& lamp, Vec3f from, Vec3f& d
 /// Bounds of a lamp for the light BVH: its point, its flux `phi`, and its directions: below the
 /// horizontal about straight down for a full-cutoff head, every direction for a globe or lantern
 /// (pbrt-v4's PointLight: theta_o = pi, theta_e = pi / 2).
-URBIS_HD inline LightBounds lampLightBounds(const LampLight& lamp, float phi) {
+URBIS_HD inline LightBounds lampLightBounds(const LampEmitter& lamp, float phi) {
     LightBounds b;
     b.bounds = {lamp.position, lamp.position};
     b.axis = {0.0f, -1.0f, 0.0f};

@@ -24,7 +24,7 @@ struct BuiltLights {
     std::vector<EmissiveSurface> surfaces;
     std::vector<TriangleLight> triangles;
     std::vector<uint32_t> lightOfMaterial;
-    std::vector<LampLight> lampLights;
+    std::vector<LampEmitter> lampLights;
     std::vector<float> skyTable;            ///< buildPiecewiseConstant2D over the sky
     LightListInfo info;
 };
@@ -125,9 +125,9 @@ void addEmissiveSurfaces(const Scene& scene, BuiltLights& lights, float& area) {
 
 /// Lamp `lamp` as a light: a point at its glass's centre whose profile (lights/lamp_light.h) carries
 /// its luminous flux in the renderer's units (kLuxPerUnit) in its blackbody's colour.
-LampLight lampLightOf(const LampRecord& lamp) {
+LampEmitter lampEmitterOf(const LampRecord& lamp) {
     const LampPiece glass = lampPiece(lamp, 3);
-    LampLight light;
+    LampEmitter light;
     light.shape = lamp.shape;
     Vec3f centre = glass.a;
     if (glass.shape == LampPieceShape::Sphere) {
@@ -152,7 +152,7 @@ void addNightLights(const Scene& scene, const LightBuildOptions& options, BuiltL
     if (options.lamps && !scene.lamps.empty()) {
         lights.info.firstLampLight = uint32_t(lights.records.size());
         for (uint32_t i = 0; i < scene.lamps.size(); ++i) {
-            lights.lampLights.push_back(lampLightOf(scene.lamps[i]));
+            lights.lampLights.push_back(lampEmitterOf(scene.lamps[i]));
             lights.records.push_back({LightKind::Point, i, scene.lamps[i].luminousFlux / kLuxPerUnit});
         }
     }
@@ -173,7 +173,11 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
     BuiltLights lights;
     const double radius = sceneRadius(scene);
     const double disk = double(kPi) * radius * radius;
-    if (options.sun && sunEnabled(scene.sun)) {
+    // A sun wholly below the horizon of an infinite ground lights nothing above it: it leaves the
+    // list, where its power would take nearly every light sample from the night's lamps and windows.
+    const float sinHalfAngle = std::sqrt(std::fmax(0.0f, 1.0f - scene.sun.cosHalfAngle * scene.sun.cosHalfAngle));
+    const bool sunSet = !scene.grounds.empty() && scene.sun.direction.y < -sinHalfAngle;
+    if (options.sun && sunEnabled(scene.sun) && !sunSet) {
         lights.info.sunLight = uint32_t(lights.records.size());
         const double solidAngle = 1.0 / double(sunPdf(scene.sun));
         lights.records.push_back({LightKind::Sun, 0, float(disk * luminance(scene.sun.radiance) * solidAngle)});

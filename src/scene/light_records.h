@@ -44,7 +44,7 @@ struct TriangleLight {
 
 /// A street lamp as a light (lights/lamp_light.h): a point at its glass whose intensity follows a
 /// profile by head shape, made from a LampRecord at scene build (lights/light_build.cpp).
-struct LampLight {
+struct LampEmitter {
     Vec3f position;          ///< world, metres: the glass's centre
     Vec3f intensity;         ///< at the profile's peak, renderer units (radiance x m^2, docs/lights.md § Units)
     float glassRadius = 0;   ///< the glass's radius, metres (a disc's, a globe's, a lantern's widest)
@@ -68,7 +68,7 @@ struct LightsView {
     const EmissiveSurface* surfaces = nullptr;
     const TriangleLight* triangles = nullptr;
     const uint32_t* lightOfMaterial = nullptr;    ///< per material: its EmissiveSurface's light, or kNoLight
-    const LampLight* lampLights = nullptr;        ///< per lamp record (SceneView::lamps), when lamps are lights
+    const LampEmitter* lampLights = nullptr;        ///< per lamp record (SceneView::lamps), when lamps are lights
     /// Lamp i is light firstLampLight + i and wall record i light firstWallLight + i (kNoLight: none are).
     uint32_t firstLampLight = kNoLight, firstWallLight = kNoLight;
     uint32_t materialCount = 0;
