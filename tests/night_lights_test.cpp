@@ -25,17 +25,8 @@ constexpr LampShape kShapes[] = {LampShape::Cobra, LampShape::Globe, LampShape::
 
 /// A lamp with its head on nothing (no pole, no arm) `height` above the origin.
 LampRecord floatingLamp(LampShape shape, float height) {
-    LampRecord l;
-    l.base = {0, 0, 0};
-    l.height = height;
-    l.poleRadius = 0.0f;
-    l.armLength = 0.0f;
-    l.shape = shape;
-    l.headSize = 0.6f;
-    l.material = 1;
-    l.colourTemperature = 3000.0f;
-    l.luminousFlux = 12000.0f;
-    return l;
+    return LampRecord{.base = {0, 0, 0}, .height = height, .armLength = 0.0f, .poleRadius = 0.0f, .headSize = 0.6f,
+                      .material = 1, .colourTemperature = 3000.0f, .luminousFlux = 12000.0f, .shape = shape};
 }
 
 /// Plane material 0, the lamp's three after it.
@@ -54,22 +45,13 @@ Scene nightScene(const TriangleMesh& mesh, std::vector<Material> materials, cons
 /// A facade wall of `slots` x `floors` cells, facing +z from the plane z = 0, its rooms lit with
 /// `share`; its materials from 1 (wall) and 2 (facade: glass, rooms, ...).
 WallRecord testWall(uint32_t slots, uint32_t floors, float share, uint32_t seed) {
-    WallRecord w;
+    WallRecord w{.origin = {-0.5f * (float(slots) * 3.0f + 1.0f), 0.0f, 0.0f}, .axisU = {1, 0, 0}, .normal = {0, 0, 1},
+                 .slotWidth = 3.0f, .floorHeight = 3.2f, .slots = uint16_t(slots), .floors = uint16_t(floors),
+                 .windowWidth = 1.4f, .windowHeight = 1.6f, .object = 1, .cellSeed = seed};
     test::giveTestFacade(WallStyle::Punched, w);
     w.flags = 0;
-    w.origin = {-0.5f * (float(slots) * 3.0f + 1.0f), 0.0f, 0.0f};
-    w.axisU = {1, 0, 0};
-    w.normal = {0, 0, 1};
-    w.slots = uint16_t(slots);
-    w.floors = uint16_t(floors);
-    w.slotWidth = 3.0f;
-    w.floorHeight = 3.2f;
     w.width = w.gridWidth() + 1.0f;
     w.height = w.gridHeight() + 0.9f;
-    w.windowWidth = 1.4f;
-    w.windowHeight = 1.6f;
-    w.object = 1;
-    w.cellSeed = seed;
     w.litChance = w.shopLitChance = chanceByte(share);
     return w;
 }
