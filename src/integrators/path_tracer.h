@@ -45,7 +45,7 @@ struct BounceInfo {
     /// panes since: a lit room it finds is a window that the vertex's light samples could reach
     /// through the pane (lights/window_light.h), so MIS weighs it though countsInFull is set.
     bool windowPath = false;
-    Vec3f from;
+    Vec3f from{};
 };
 
 /// The BounceInfo of the ray that a BSDF sample `bsdf` of `material` sends on from `vertex`, after a
