@@ -15,7 +15,8 @@ namespace urbis {
 
 /// Linear Rec.709 colours of blackbodies at 2700 K and 4000 K, luminance 1 (blackbodyRgb of
 /// scene/lamp_emission.h; a test holds them to it): a room's colour lies between them.
-inline constexpr Vec3f kWindowWarm{1.9144f, 0.8099f, 0.1908f}, kWindowCool{1.4060f, 0.9265f, 0.5326f};
+URBIS_TABLE Vec3f kWindowWarm{1.9144f, 0.8099f, 0.1908f};
+URBIS_TABLE Vec3f kWindowCool{1.4060f, 0.9265f, 0.5326f};
 /// What a drawn curtain lets through, and the noise's cell (metres).
 inline constexpr float kCurtainTransmission = 0.3f, kWindowNoiseScale = 0.7f;
 /// Salt of the hash of a window's look, apart from cellRandom's choices of its geometry.
