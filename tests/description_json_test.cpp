@@ -75,7 +75,7 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "camera", "camera.position", "camera.target", "camera.geo", "camera.fov",
         "sun", "sun.elevation", "sun.azimuth", "sun.angular_radius", "sun.irradiance",
         "astronomy", "astronomy.time", "astronomy.location", "astronomy.sun_from_time",
-        "sky", "sky.zenith", "sky.horizon", "sky.ground", "sky.exponent",
+        "sky", "sky.zenith", "sky.horizon", "sky.ground", "sky.exponent", "lights", "lights.hour",
         "materials", "materials.ground", "materials.ground.albedo", "materials.window_glass",
         "materials.window_glass.transmittance", "materials.window_glass.ior", "materials.lit_room",
         "materials.lit_room.emission", "materials.wall_colour_by_type", "materials.roof_colour_by_type",

@@ -117,6 +117,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     meshOptions.streets = d.geometry.streets;
     if (d.geometry.traffic != "auto")
         meshOptions.traffic = d.geometry.traffic == "left" ? TrafficSide::Left : TrafficSide::Right;
+    meshOptions.hour = hourOf(d);
     CityMesh mesh;
     CelestialLights celestial;
     {

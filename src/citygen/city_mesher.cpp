@@ -2,6 +2,7 @@
 
 #include "citygen/building_mesher.h"
 #include "citygen/facade_mesher.h"
+#include "citygen/window_schedule.h"
 #include "base/input_error.h"
 #include "scene/memory_budget.h"
 #include "scene/surface_part.h"
@@ -176,6 +177,8 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
         wallInfo[i] = {table.indexOf(b.wallColour), uint32_t(i + 1), uint32_t(SurfacePart::Facade)};
         roofInfo[i] = {table.indexOf(b.roofColour), uint32_t(i + 1), uint32_t(SurfacePart::Roof)};
         facades[i] = {&b, facadeStyleOf(b), uint32_t(i + 1), wallInfo[i].material, 0};
+        facades[i].litChance = chanceByte(litRoomShare(windowUseOf(b.type), options.hour));
+        facades[i].shopLitChance = chanceByte(litShopWindowShare(options.hour));
     }
     out.materials = std::move(table.materials);
     const uint32_t facadeMaterials = uint32_t(out.materials.size());

@@ -24,13 +24,16 @@ struct CityMaterials {
     Vec3f groundAlbedo{0.10f, 0.11f, 0.09f};
     Vec3f glassTransmittance{0.85f, 0.9f, 0.9f};   ///< the windows' panes (FacadeMaterial::Glass)
     float glassIor = 1.5f;
-    Vec3f litRoomEmission{0.16f, 0.12f, 0.08f};    ///< lit rooms behind windows: indoor light by day, far below sunlit walls
+    /// Lit rooms behind windows: its luminance is a lit room's mean (0.0044, some 140 cd/m^2 in the units
+    /// of lights/lamp_light.h), each window's colour temperature and intensity its own (lights/window_light.h).
+    Vec3f litRoomEmission{0.0067f, 0.0040f, 0.0019f};
 };
 
 struct CityMeshOptions {
     GeometryModes geometry;   ///< walls=plain: each building a closed mass model (every edge shared)
     CityMaterials materials;
     bool streets = true;      ///< roads, sidewalks, ground cover, lamps (streets/); false: buildings on the bare ground
+    float hour = 12.0f;       ///< local clock hours: which rooms are lit (citygen/window_schedule.h)
     /// The side traffic keeps (lanes, stop lines); nullopt: by the city's place (trafficSideOf).
     std::optional<TrafficSide> traffic;
     /// Bytes the triangle twin may take to build; 0: the memory available now.

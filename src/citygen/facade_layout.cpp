@@ -67,6 +67,8 @@ bool layoutWall(const WallContext& context, Vec2d a, Vec2d b, bool outsideRight,
     w.facadeMaterials = context.facadeMaterials;
     w.style = style.style;
     w.flags = style.flags;
+    w.litChance = context.litChance;
+    w.shopLitChance = context.shopLitChance;
     out = w;
     return true;
 }

@@ -20,6 +20,8 @@ struct WallContext {
     /// Flat roofs' parapets ride on the wall records (--geometry roofs=procedural), else they are
     /// stored triangles.
     bool proceduralParapets = true;
+    /// Chances in 255ths that a room and a shop window are lit (WallRecord's; citygen/window_schedule.h).
+    uint8_t litChance = 77, shopLitChance = 77;
 };
 
 /// The wall on the footprint edge from `a` to `b` (city plane, metres) between heights `bottom` and

@@ -88,6 +88,12 @@ struct SkyDescription {
     float exponent = Sky{}.exponent;
 };
 
+/// The night's lights. `hour` (local clock hours, 0 to 24) sets which rooms are lit
+/// (citygen/window_schedule.h); negative: from the sun (hourOf in description/scene_parts.h).
+struct LightsDescription {
+    float hour = -1.0f;
+};
+
 /// Materials and style overrides: the city's fixed materials, and wall and roof colours by building
 /// type for the buildings whose tags name no colour (the palettes' colours otherwise).
 struct MaterialsDescription {
@@ -134,6 +140,7 @@ struct SceneDescription {
     SunDescription sun;
     AstronomyDescription astronomy;
     SkyDescription sky;
+    LightsDescription lights;
     MaterialsDescription materials;
     GeometryDescription geometry;
     IntegratorDescription integrator;

@@ -66,6 +66,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.vec3("ground", d.sky.ground, 0.0f, 1e6f);
         v.number("exponent", d.sky.exponent, 0.01f, 100.0f);
     });
+    v.object("lights", [&] { v.number("hour", d.lights.hour, -1.0f, 24.0f); });
     v.object("materials", [&] {
         v.object("ground", [&] { v.vec3("albedo", d.materials.city.groundAlbedo, 0.0f, 1.0f); });
         v.object("window_glass", [&] {

@@ -1,9 +1,12 @@
 #include "description/scene_parts.h"
 
 #include "description/building_type_names.h"
+#include "description/celestial_parts.h"
 #include "base/input_error.h"
 #include "osm/geo_projection.h"
 #include "scene/camera_framing.h"
+
+#include <cmath>
 
 namespace urbis {
 
@@ -40,6 +43,14 @@ void applyColourOverrides(const MaterialsDescription& materials, CityModel& city
 }
 
 Sun sunOf(const SunDescription& sun) { return makeSun(sun.elevation, sun.azimuth, sun.angularRadius, sun.irradiance); }
+
+float hourOf(const SceneDescription& d) {
+    if (d.lights.hour >= 0.0f) return d.lights.hour;
+    if (const std::optional<double> clock = localHourOf(d.astronomy)) return float(*clock);
+    if (d.sun.elevation >= 0.0f) return 12.0f;
+    const float azimuth = std::fmod(std::fmod(d.sun.azimuth, 360.0f) + 360.0f, 360.0f);
+    return azimuth >= 180.0f ? 21.0f : 5.0f;
+}
 
 Sky skyOf(const SkyDescription& sky) { return Sky{sky.zenith, sky.horizon, sky.ground, sky.exponent}; }
 

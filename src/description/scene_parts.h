@@ -27,6 +27,10 @@ ImportOptions importOptionsOf(const SourceDescription& source);
 void applyColourOverrides(const MaterialsDescription& materials, CityModel& city);
 
 Sun sunOf(const SunDescription& sun);
+/// The local hour (0 to 24) that sets which rooms are lit: lights.hour where it is set (not
+/// negative); else the local clock hour of astronomy.time where given; else from the sun: 12 while it is up, 21 after it sets in the west (azimuth 180 to
+/// 360), 5 before it rises in the east.
+float hourOf(const SceneDescription& d);
 Sky skyOf(const SkyDescription& sky);
 
 /// The per-frame settings of the integrator on a film of that size.

@@ -40,8 +40,6 @@ inline constexpr uint8_t kWallPartBox = 3;
 /// The most parts a cell (or the margins) can have: a punched cell with a balcony, both sides.
 inline constexpr int kMaxCellParts = 22;
 
-/// Per-window choices, the same for every ray: 1 in this many rooms is lit (by day: emissive).
-inline constexpr float kLitRoomChance = 0.3f;
 /// Chance that a cell of a wall with balconies holds one (above the ground floor).
 inline constexpr float kBalconyChance = 0.5f;
 /// Chance that a ground-floor cell of a shop-front wall holds a shop window (as in the thesis).
@@ -97,16 +95,20 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
     c.v0 = wall.floorV(int(floor));
     c.v1 = c.v0 + wall.floorHeight;
     HashStream rng = cellRandom(wall, floor, slot);
-    const bool lit = rng.uniform() < kLitRoomChance;
-    c.roomMaterial = wall.facadeMaterials + uint32_t(lit ? FacadeMaterial::RoomLit : FacadeMaterial::RoomDark);
+    // Two draws, whatever the cell: whether its room is lit (against the chance of a shop window or
+    // of a room, which the hour and the building's use set: citygen/window_schedule.h), and its opening.
+    const float litDraw = rng.uniform(), choice = rng.uniform();
+    const bool shopWindow = wall.style == WallStyle::Punched && (wall.flags & kWallShopFront) && floor == 0 &&
+                            choice < kShopWindowChance;
+    const float chance = float(shopWindow ? wall.shopLitChance : wall.litChance) * (1.0f / 255.0f);
+    c.roomMaterial = wall.facadeMaterials + uint32_t(litDraw < chance ? FacadeMaterial::RoomLit : FacadeMaterial::RoomDark);
     c.balcony = false;
     if (wall.style == WallStyle::Curtain) {
         c.ou0 = c.u0 + kHalfMullion, c.ou1 = c.u1 - kHalfMullion;
         c.ov0 = c.v0 + kHalfMullion, c.ov1 = c.v1 - kHalfMullion;
         return c;
     }
-    const float choice = rng.uniform();
-    if ((wall.flags & kWallShopFront) && floor == 0 && choice < kShopWindowChance) {
+    if (shopWindow) {
         c.ou0 = c.u0 + 0.25f;
         c.ou1 = c.u1 - 0.25f;
         c.ov0 = c.v0 + 0.35f;

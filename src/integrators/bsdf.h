@@ -68,11 +68,7 @@ URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, 
     case MaterialKind::Glass: {
         // Schlick's approximation (Schlick 1994) of the Fresnel reflectance; reflect or transmit in
         // proportion, so each branch's weight is 1 (reflection) or the tint (transmission).
-        float r0 = (m.ior - 1.0f) / (m.ior + 1.0f);
-        r0 *= r0;
-        float c = 1.0f - fminf(1.0f, fabsf(dot(wo, n)));
-        float fresnel = r0 + (1.0f - r0) * c * c * c * c * c;
-        if (u0 < fresnel) s = {reflect(wo, n), Vec3f{1, 1, 1}, true};
+        if (u0 < glassFresnel(m, dot(wo, n))) s = {reflect(wo, n), Vec3f{1, 1, 1}, true};
         else s = {-wo, m.albedo, true};
         return true;
     }

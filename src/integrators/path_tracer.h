@@ -42,14 +42,32 @@ struct PathVertex {
 struct BounceInfo {
     float pdf = 0;        ///< solid angle
     bool countsInFull = true;  ///< camera rays and specular bounces: no light sample can find the same light
+    /// The ray left a scattering vertex at `from` with pdf `pdf` and went on only straight through
+    /// panes since: a lit room it finds is a window that the vertex's light samples could reach
+    /// through the pane (lights/window_light.h), so MIS weighs it though countsInFull is set.
+    bool windowPath = false;
+    Vec3f from{};
 };
+
+/// The BounceInfo of the ray that a BSDF sample `bsdf` of `material` sends on from `vertex`, after a
+/// ray of `before`: a pane's straight transmission keeps the window path of the ray it continues.
+URBIS_HD inline BounceInfo bounceAfter(const BounceInfo& before, const PathVertex& vertex, const Material& material,
+                                       const BsdfSample& bsdf) {
+    if (!bsdf.specular) return {bsdf.pdf, false, true, vertex.origin};
+    const bool throughPane = material.kind == MaterialKind::Glass && dot(bsdf.dir, vertex.normal) < 0.0f;
+    return {before.pdf, true, throughPane && before.windowPath, before.from};
+}
 
 /// Whether MIS weighs light samples of `kind` against BSDF sampling. Not the sun's: its disk (about
 /// 7e-5 sr) has a light-sampling pdf thousands of times any BSDF's, where the power heuristic would
 /// give its light samples a weight of 1 to within (p_bsdf / p_sun)^2. So they count in full and a BSDF
 /// sample that finds the disk counts nothing (weights 1 and 0 sum to one as well): no power heuristic
-/// per sun sample or per BSDF sample that finds the disk. The moon's disk is as small.
-URBIS_HD inline bool misWeighs(LightKind kind) { return kind != LightKind::Sun && kind != LightKind::Moon; }
+/// per sun sample or per BSDF sample that finds the disk. The moon's disk is as small. Not a lamp's
+/// either: a point, which BSDF sampling never finds; its glass, found at a scattering vertex, counts
+/// nothing (lights/lamp_light.h).
+URBIS_HD inline bool misWeighs(LightKind kind) {
+    return kind != LightKind::Sun && kind != LightKind::Moon && kind != LightKind::Point;
+}
 
 /// Weight of emission that a BSDF sample of `bounce` found, against `lightSamples` light samples
 /// that pick `light` (of kind `kind`) with `selectionPmf` and reach the same point with solid-angle pdf `pdf`.
@@ -68,6 +86,36 @@ URBIS_HD inline float lightSampleWeight(LightKind kind, uint32_t lightSamples, f
     return powerHeuristic(float(lightSamples), lightPdf, 1.0f, bsdfPdf);
 }
 
+/// What a ray of `bounce` with unit direction `dir` finds emitted at `hit` (of `material`), weighed
+/// against the light samples that reach it: a lit room (its window's look, lights/window_light.h), a
+/// lamp's glass (lights/lamp_light.h), or an emitting material.
+URBIS_HD inline Vec3f foundEmission(const SceneView& scene, const RenderSettings& settings, const SurfaceHit& hit,
+                                    const Material& material, const Ray& ray, Vec3f dir, const BounceInfo& bounce) {
+    const LightsView& lights = scene.lights;
+    if (hit.kind == kPrimKindOf<LampRecord> && hit.part == SurfacePart::LampGlass && lights.firstLampLight != kNoLight) {
+        const float weight = bsdfFoundWeight(bounce, LightKind::Point, settings.lightSamples,
+                                             lightSelectionPmf(lights, settings.lightSampler, lights.firstLampLight + hit.index), 0.0f);
+        return lampGlassRadiance(lights.lampLights[hit.index], -dir) * weight;
+    }
+    if (!(maxComponent(material.emission) > 0.0f)) return {};
+    if (hit.kind == kPrimKindOf<WallRecord>) {
+        const WallRecord& wall = scene.walls[hit.index];
+        if (hit.material != wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)) return material.emission;
+        const Vec3f L = litRoomRadiance(wall, material.emission, ray.origin, dir, hit.uv);
+        if (!bounce.windowPath || lights.firstWallLight == kNoLight || settings.lightSamples == 0) return L;
+        const float pdf = lightSelectionPmf(lights, settings.lightSampler, lights.firstWallLight + hit.index) *
+                          wallWindowsPdf(wall, bounce.from, dir);
+        return pdf > 0.0f ? L * powerHeuristic(1.0f, bounce.pdf, float(settings.lightSamples), pdf) : L;
+    }
+    // An emitter found by BSDF sampling: weighed against its light samples where it has any.
+    const uint32_t light = hit.material < lights.materialCount ? lights.lightOfMaterial[hit.material] : kNoLight;
+    if (light == kNoLight || bounce.countsInFull) return material.emission;
+    return material.emission * bsdfFoundWeight(bounce, LightKind::EmissiveSurface, settings.lightSamples,
+                                               lightSelectionPmf(lights, settings.lightSampler, light),
+                                               lightPdf(scene, lightRecord(lights, light), dir, hit.t * length(ray.dir),
+                                                        dot(hit.normal, dir)));
+}
+
 /// The shadow ray from `origin`, where the light sample was drawn, towards it. Towards a point of a
 /// surface it stops short of that point, so that the emitter does not block its own light.
 URBIS_HD inline Ray shadowRayTowards(Vec3f origin, const LightSample& ls) {
@@ -80,15 +128,16 @@ URBIS_HD inline Ray shadowRayTowards(Vec3f origin, const LightSample& ls) {
 URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSettings& settings, const PathVertex& vertex,
                                      SampleStream& rng, Ray& shadow, Vec3f& contribution) {
     // Numbers are drawn only where they choose something (each draw is a hash): the light where
-    // there is more than one, the triangle of a surface.
+    // there is more than one, the triangle of a surface or the window of a wall, the point of anything but a lamp.
     const float uLight = lightCount(scene.lights) > 1 ? rng.draw() : 0.0f;
     float pmf;
     const uint32_t index = selectLight(scene.lights, settings.lightSampler, uLight, pmf);
     if (!(pmf > 0.0f)) return false;
     LightSample ls;
     const LightRecord light = lightRecord(scene.lights, index);
-    const float u0 = light.kind == LightKind::EmissiveSurface ? rng.draw() : 0.0f;
-    const float u1 = rng.draw(), u2 = rng.draw();
+    const bool picks = light.kind == LightKind::EmissiveSurface || light.kind == LightKind::Aggregate;
+    const float u0 = picks ? rng.draw() : 0.0f;
+    const float u1 = light.kind == LightKind::Point ? 0.0f : rng.draw(), u2 = light.kind == LightKind::Point ? 0.0f : rng.draw();
     if (!sampleLight(scene, light, vertex.origin, u0, u1, u2, ls)) return false;
     const Material& material = scene.materials[vertex.material];
     float pdfBsdf;
@@ -155,17 +204,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
         } else {
             const Material& material = scene.materials[hit.material];
             const Vec3f dir = normalize(ray.dir);
-            if (maxComponent(material.emission) > 0.0f) {
-                // An emitter found by BSDF sampling: weighed against its light samples where it has any.
-                const uint32_t light = hit.material < lights.materialCount ? lights.lightOfMaterial[hit.material] : kNoLight;
-                float weight = 1.0f;
-                if (light != kNoLight && !bounce.countsInFull)
-                    weight = bsdfFoundWeight(bounce, LightKind::EmissiveSurface, settings.lightSamples,
-                                             lightSelectionPmf(lights, settings.lightSampler, light),
-                                             lightPdf(scene, lightRecord(lights, light), dir, hit.t * length(ray.dir),
-                                                      dot(hit.normal, dir)));
-                out.radiance += throughput * material.emission * weight;
-            }
+            out.radiance += throughput * foundEmission(scene, settings, hit, material, ray, dir, bounce);
             const Vec3f offset = rayOriginOffset(hit.position, hit.normal);
             vertex.origin = hit.position + offset;
             vertex.normal = hit.normal;
@@ -186,7 +225,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             }
             if (goesOn) {
                 throughput *= bsdf.weight;
-                bounce = BounceInfo{bsdf.pdf, bsdf.specular};
+                bounce = bounceAfter(bounce, vertex, material, bsdf);
                 if (depth + 1 >= settings.rrDepth) {
                     float survival = fminf(maxComponent(throughput), settings.rrSurvival);
                     goesOn = rng.draw() < survival;

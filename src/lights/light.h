@@ -4,8 +4,10 @@
 #pragma once
 
 #include "lights/emissive_surface_light.h"
+#include "lights/lamp_light.h"
 #include "lights/sky_light.h"
 #include "lights/sun_light.h"
+#include "lights/window_light.h"
 #include "scene/scene_view.h"
 
 namespace urbis {
@@ -24,7 +26,7 @@ URBIS_HD inline const Sun& diskLight(const SceneView& scene, LightKind kind) {
 }
 
 /// Samples `light` as seen from `from` with three uniform numbers. Returns false when it gives
-/// nothing there (a disabled sun, an edge-on surface, a reserved kind).
+/// nothing there (a disabled sun, an edge-on surface, an unlit window, a reserved kind).
 URBIS_HD inline bool sampleLight(const SceneView& scene, const LightRecord& light, Vec3f from, float u0, float u1,
                                  float u2, LightSample& s) {
     switch (light.kind) {
@@ -46,9 +48,15 @@ URBIS_HD inline bool sampleLight(const SceneView& scene, const LightRecord& ligh
         s.radiance = surface.emission;
         return sampleEmissiveSurface(scene.lights.triangles, surface, from, u0, u1, u2, s.dir, s.distance, s.pdf);
     }
-    case LightKind::Point:      // lamps sample their position and evaluate their profile here
+    case LightKind::Point:
+        return sampleLampLight(scene.lights.lampLights[light.index], from, s.dir, s.radiance, s.distance, s.pdf);
+    case LightKind::Aggregate: {
+        const WallRecord& wall = scene.walls[light.index];
+        const Vec3f room = scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)].emission;
+        const Material& glass = scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::Glass)];
+        return sampleWallWindows(wall, room, glass, from, u0, u1, u2, s.dir, s.distance, s.pdf, s.radiance);
+    }
     case LightKind::Spot:
-    case LightKind::Aggregate:  // an aggregate picks one of its emitters (a lit window) here
         return false;
     }
     return false;
@@ -56,9 +64,9 @@ URBIS_HD inline bool sampleLight(const SceneView& scene, const LightRecord& ligh
 
 /// Solid-angle pdf with which sampleLight(light) returns the unit direction `dir`, when that
 /// direction reaches the light at `distance` where its surface makes cosine `cosLight` with `dir`
-/// (the last two matter for surfaces only).
+/// (those two matter for surfaces only); `from` is the shading point, which an aggregate's pdf needs.
 URBIS_HD inline float lightPdf(const SceneView& scene, const LightRecord& light, Vec3f dir, float distance,
-                               float cosLight) {
+                               float cosLight, Vec3f from = {}) {
     switch (light.kind) {
     case LightKind::Sun:
     case LightKind::Moon: {
@@ -69,9 +77,10 @@ URBIS_HD inline float lightPdf(const SceneView& scene, const LightRecord& light,
         return skyDirectionPdf(scene.lights.skyTable, dir);
     case LightKind::EmissiveSurface:
         return emissiveSurfacePdf(scene.lights.surfaces[light.index], distance, cosLight);
-    case LightKind::Point:      // delta lights: no direction reaches them by BSDF sampling
+    case LightKind::Aggregate:  // `dir` from the shading point `from`
+        return wallWindowsPdf(scene.walls[light.index], from, dir);
+    case LightKind::Point:      // a delta light: no direction reaches it by BSDF sampling
     case LightKind::Spot:
-    case LightKind::Aggregate:
         return 0.0f;
     }
     return 0.0f;

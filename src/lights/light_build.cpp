@@ -1,7 +1,15 @@
 #include "lights/light_build.h"
 
+#include "lights/lamp_light.h"
 #include "lights/sky_light.h"
 #include "lights/sun_light.h"
+#include "lights/window_light.h"
+#include "scene/lamp_emission.h"
+#include "scene/lamp_pieces.h"
+
+#include <cmath>
+
+#include <tbb/parallel_for.h>
 
 #include <map>
 
@@ -16,6 +24,7 @@ struct BuiltLights {
     std::vector<EmissiveSurface> surfaces;
     std::vector<TriangleLight> triangles;
     std::vector<uint32_t> lightOfMaterial;
+    std::vector<LampEmitter> lampLights;
     std::vector<float> skyTable;            ///< buildPiecewiseConstant2D over the sky
     LightListInfo info;
 };
@@ -114,14 +123,62 @@ void addEmissiveSurfaces(const Scene& scene, BuiltLights& lights, float& area) {
     }
 }
 
+/// Lamp `lamp` as a light: a point at its glass's centre whose profile (lights/lamp_light.h) carries
+/// its luminous flux in the renderer's units (kLuxPerUnit) in its blackbody's colour.
+LampEmitter lampEmitterOf(const LampRecord& lamp) {
+    const LampPiece glass = lampPiece(lamp, 3);
+    LampEmitter light;
+    light.shape = lamp.shape;
+    Vec3f centre = glass.a;
+    if (glass.shape == LampPieceShape::Sphere) {
+        light.glassRadius = light.clearance = glass.b.x;
+    } else if (glass.b.x > 0.0f) {   // a lantern's glass: a frustum up from its bottom
+        centre.y += 0.5f * glass.b.x;
+        light.glassRadius = glass.b.y + 0.5f * glass.b.z * glass.b.x;
+        light.glassHeight = glass.b.x;
+        light.clearance = std::hypot(glass.highRadius(), 0.5f * glass.b.x);
+    } else {                         // a disc facing down: the shadow ray stops a centimetre short
+        light.glassRadius = glass.b.y;
+        light.clearance = 0.01f;
+    }
+    light.position = lamp.worldFromLamp(centre);
+    light.intensity = blackbodyRgb(lamp.colourTemperature) * (lamp.luminousFlux / kLuxPerUnit / lampProfileIntegral(lamp.shape));
+    return light;
+}
+
+/// The street lamps (one Point light each, in the order of scene.lamps) and every wall record's lit
+/// windows (one Aggregate each, in the order of scene.walls), with their flux as power.
+void addNightLights(const Scene& scene, const LightBuildOptions& options, BuiltLights& lights) {
+    if (options.lamps && !scene.lamps.empty()) {
+        lights.info.firstLampLight = uint32_t(lights.records.size());
+        for (uint32_t i = 0; i < scene.lamps.size(); ++i) {
+            lights.lampLights.push_back(lampEmitterOf(scene.lamps[i]));
+            lights.records.push_back({LightKind::Point, i, scene.lamps[i].luminousFlux / kLuxPerUnit});
+        }
+    }
+    if (options.windows && !scene.walls.empty()) {
+        lights.info.firstWallLight = uint32_t(lights.records.size());
+        std::vector<float> power(scene.walls.size());
+        tbb::parallel_for(size_t(0), scene.walls.size(), [&](size_t i) {
+            const WallRecord& wall = scene.walls[i];
+            power[i] = wallWindowsPower(wall, scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)].emission);
+        });
+        for (uint32_t i = 0; i < scene.walls.size(); ++i) lights.records.push_back({LightKind::Aggregate, i, power[i]});
+    }
+}
+
 } // namespace
 
 void buildLights(Scene& scene, const LightBuildOptions& options) {
     BuiltLights lights;
     const double radius = sceneRadius(scene);
     const double disk = double(kPi) * radius * radius;
-    // The sun and the moon: a disk's power is its radiance times its solid angle through `disk`.
+    // The sun and the moon: a disk's power is its radiance times its solid angle through `disk`. A
+    // disk wholly below the horizon of an infinite ground lights nothing above it: it leaves the
+    // list, where its power would take nearly every light sample from the night's lamps and windows.
     const auto addDisk = [&](const Sun& light, LightKind kind, uint32_t& place) {
+        const float sinHalfAngle = std::sqrt(std::fmax(0.0f, 1.0f - light.cosHalfAngle * light.cosHalfAngle));
+        if (!scene.grounds.empty() && light.direction.y < -sinHalfAngle) return;
         place = uint32_t(lights.records.size());
         lights.records.push_back({kind, 0, float(disk * luminance(light.radiance) / double(sunPdf(light)))});
     };
@@ -147,6 +204,8 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
     float area = 0;
     if (options.surfaces) addEmissiveSurfaces(scene, lights, area);
     else lights.lightOfMaterial.assign(scene.materials.size(), kNoLight);
+    if (scene.sun.direction.y < std::sin(options.nightBelowElevation * kPi / 180.0f) || !sunEnabled(scene.sun))
+        addNightLights(scene, options, lights);
     std::vector<float> power;
     for (const LightRecord& light : lights.records) power.push_back(light.power);
     lights.powerTable = buildPiecewiseConstant1D(power);
@@ -157,12 +216,15 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
     scene.emissiveSurfaces = std::move(lights.surfaces);
     scene.triangleLights = std::move(lights.triangles);
     scene.lightOfMaterial = std::move(lights.lightOfMaterial);
+    scene.lampLights = std::move(lights.lampLights);
     scene.skyTable = std::move(lights.skyTable);
     scene.lights = lights.info;
 }
 
 Bounds3f lightBounds(const Scene& scene, const LightRecord& light) {
     Bounds3f bounds;
+    if (light.kind == LightKind::Point) return lampLightBounds(scene.lampLights[light.index], light.power).bounds;
+    if (light.kind == LightKind::Aggregate) return wallWindowsLightBounds(scene.walls[light.index], light.power).bounds;
     if (light.kind != LightKind::EmissiveSurface) return bounds;
     const EmissiveSurface& surface = scene.emissiveSurfaces[light.index];
     for (uint32_t i = 0; i < surface.triangleCount; ++i) {

@@ -16,6 +16,11 @@ struct LightBuildOptions {
     /// The sky joins the list only where its (compensated) power is at least this share of the sun's
     /// and its own together (light_build.cpp); 0: wherever its table is not empty.
     float skyMinShare = 0.5f;
+    /// Street lamps (Point lights) and walls of lit windows (Aggregate lights) join the list when the
+    /// sun is below this elevation (degrees) or off: at dusk and at night. By day lit rooms are still
+    /// found by BSDF sampling (counted in full) and lamps do not shine.
+    float nightBelowElevation = 6.0f;
+    bool lamps = true, windows = true;
 };
 
 /// Fills the light arrays of `scene` (scene_arrays.h) and scene.lights from the rest of it. What is left out of the list is still found by

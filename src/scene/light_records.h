@@ -4,6 +4,7 @@
 
 #include "math/piecewise_constant.h"
 #include "math/vec.h"
+#include "scene/lamp_record.h"
 
 #include <cstdint>
 
@@ -15,9 +16,9 @@ enum class LightKind : uint32_t {
     Sky,              ///< SceneView::sky: the environment, importance-sampled from its radiance
     Moon,             ///< SceneView::night.moon: a disk of directions, as the sun
     EmissiveSurface,  ///< LightsView::surfaces[index]: the triangles of one emitting material
-    Point,            ///< reserved: street lamps (with an emission profile), not built yet
+    Point,            ///< LightsView::lampLights[index]: a street lamp, a point with a profile by head shape
     Spot,             ///< reserved: spot lamps (with a cone and profile), not built yet
-    Aggregate,        ///< reserved: many emitters as one (a wall of lit windows), not built yet
+    Aggregate,        ///< SceneView::walls[index]: the lit windows of one wall record (tile), as one light
 };
 
 /// One light of the sampler's list.
@@ -42,6 +43,19 @@ struct TriangleLight {
     float cdf = 0;
 };
 
+/// A street lamp as a light (lights/lamp_light.h): a point at its glass whose intensity follows a
+/// profile by head shape, made from a LampRecord at scene build (lights/light_build.cpp).
+struct LampEmitter {
+    Vec3f position;          ///< world, metres: the glass's centre
+    Vec3f intensity;         ///< at the profile's peak, renderer units (radiance x m^2, docs/lights.md § Units)
+    float glassRadius = 0;   ///< the glass's radius, metres (a disc's, a globe's, a lantern's widest)
+    float glassHeight = 0;   ///< a lantern's glass's height, metres; 0 for the others
+    /// Shadow rays towards the point stop this far short of it, so that the lamp's own glass does
+    /// not block them: the radius of a sphere about the point holding the glass.
+    float clearance = 0;
+    LampShape shape = LampShape::Cobra;
+};
+
 constexpr uint32_t kNoLight = 0xffffffffu;
 
 /// What per-ray code sees of the scene's lights. Not built (buildLights was not called), it stands
@@ -55,6 +69,9 @@ struct LightsView {
     const EmissiveSurface* surfaces = nullptr;
     const TriangleLight* triangles = nullptr;
     const uint32_t* lightOfMaterial = nullptr;    ///< per material: its EmissiveSurface's light, or kNoLight
+    const LampEmitter* lampLights = nullptr;        ///< per lamp record (SceneView::lamps), when lamps are lights
+    /// Lamp i is light firstLampLight + i and wall record i light firstWallLight + i (kNoLight: none are).
+    uint32_t firstLampLight = kNoLight, firstWallLight = kNoLight;
     uint32_t materialCount = 0;
     PiecewiseConstant2DView skyTable;             ///< over (u, v) of the sky's equal-area map (lights/sky_light.h)
     uint32_t sunLight = 0, skyLight = kNoLight;   ///< their places in records, or kNoLight

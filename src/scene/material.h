@@ -24,4 +24,13 @@ struct Material {
     float ior = 1.5f;                ///< Glass: index of refraction, for Schlick's R0
 };
 
+/// Reflectance of a Glass material's pane at `cosine` (of either side) with its normal: Schlick's
+/// approximation (Schlick 1994) of the Fresnel reflectance for the material's ior.
+URBIS_HD inline float glassFresnel(const Material& m, float cosine) {
+    float r0 = (m.ior - 1.0f) / (m.ior + 1.0f);
+    r0 *= r0;
+    const float c = 1.0f - fminf(1.0f, fabsf(cosine));
+    return r0 + (1.0f - r0) * c * c * c * c * c;
+}
+
 } // namespace urbis

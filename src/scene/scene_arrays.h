@@ -26,6 +26,7 @@
     X(EmissiveSurface, emissiveSurfaces, "emissive_surfaces") \
     X(TriangleLight, triangleLights, "triangle_lights") \
     X(uint32_t, lightOfMaterial, "light_of_material")  \
+    X(LampEmitter, lampLights, "lamp_lights")            \
     X(float, skyTable, "sky_table")
 
 namespace urbis {

@@ -9,6 +9,7 @@ namespace urbis {
 struct LightListInfo {
     uint32_t skyNu = 0, skyNv = 0;          ///< the sky table's grid (lightsView's skyTable)
     uint32_t sunLight = kNoLight, skyLight = kNoLight, moonLight = kNoLight;
+    uint32_t firstLampLight = kNoLight, firstWallLight = kNoLight;   ///< LightsView's
     float powerIntegral = 0;                ///< of the lightPower table: kept here, since device tables are not read on the host
     bool built = false;                     ///< false: the view stands for the implicit {sun, sky}
 };
@@ -27,6 +28,9 @@ LightsView makeLightsView(const auto& arrays, const LightListInfo& info) {
     v.lightOfMaterial = arrays.lightOfMaterial.data();
     v.materialCount = uint32_t(arrays.lightOfMaterial.size());
     if (arrays.skyTable.size() != 0) v.skyTable = PiecewiseConstant2DView{arrays.skyTable.data(), info.skyNu, info.skyNv};
+    v.lampLights = arrays.lampLights.data();
+    v.firstLampLight = info.firstLampLight;
+    v.firstWallLight = info.firstWallLight;
     v.sunLight = info.sunLight;
     v.skyLight = info.skyLight;
     v.moonLight = info.moonLight;

@@ -50,6 +50,9 @@ struct WallRecord {
     uint32_t facadeMaterials = 0;///< first of FacadeMaterial::Count materials
     WallStyle style = WallStyle::Punched;
     uint8_t flags = 0;           ///< WallFlags
+    /// Chance, in 255ths, that a room (a shop window: shopLitChance) is lit: set at scene build by
+    /// the hour and the building's use (citygen/window_schedule.h); the defaults are 30 %.
+    uint8_t litChance = 77, shopLitChance = 77;
     /// The tile of the wall this record stands for, as a BVH primitive: slots [slot0, slotEnd) and
     /// floors [floor0, floorEnd) of the grid (ends clamped to slots and floors), plus the margins
     /// next to them where the tile touches the wall's edge. The defaults are the whole wall. Cell

@@ -1,0 +1,198 @@
+// Lit windows (host+device): how each lit room looks (colour temperature, intensity, a curtain, the
+// thesis's per-window noise), and a wall record (a tile) as one aggregate light of its lit
+// windows. Everything comes from hashes of (wall seed, floor, slot): nothing per window is stored.
+// A light sample picks a cell of the tile uniformly (an unlit one gives nothing) and a uniform
+// point of its glass; the window's glass plane is the emitter, its radiance the room's behind it
+// through the pane (docs/lights.md § Lit windows).
+#pragma once
+
+#include "geometry/wall_parts.h"
+#include "scene/light_bounds.h"
+#include "scene/material.h"
+#include "scene/scene_view.h"
+
+namespace urbis {
+
+/// Linear Rec.709 colours of blackbodies at 2700 K and 4000 K, luminance 1 (blackbodyRgb of
+/// scene/lamp_emission.h; a test holds them to it): a room's colour lies between them.
+URBIS_TABLE Vec3f kWindowWarm{1.9144f, 0.8099f, 0.1908f};
+URBIS_TABLE Vec3f kWindowCool{1.4060f, 0.9265f, 0.5326f};
+/// What a drawn curtain lets through, and the noise's cell (metres).
+inline constexpr float kCurtainTransmission = 0.3f, kWindowNoiseScale = 0.7f;
+/// Salt of the hash of a window's look, apart from cellRandom's choices of its geometry.
+inline constexpr uint32_t kWindowLookSalt = 0x9e3779b9u;
+
+/// The look of one lit room, from its hash.
+struct WindowLook {
+    Vec3f colour;          ///< luminance 1: a blackbody between 2700 and 4000 K
+    float intensity;       ///< 0.5 to 1.5 times the lit room's emission
+    float curtainShare;    ///< of the opening's width a curtain covers (0: none), from curtainFromLeft's side
+    bool curtainFromLeft;
+    Vec3f curtainTint;     ///< luminance about 1
+    uint32_t noiseKey;
+};
+
+/// The look of the room of cell (floor, slot) of `wall` (whether it is lit or not).
+URBIS_HD inline WindowLook windowLook(const WallRecord& wall, uint32_t floor, uint32_t slot) {
+    HashStream rng{hash3(wall.cellSeed ^ kWindowLookSalt, floor, slot)};
+    WindowLook w;
+    const float t = rng.uniform();
+    w.colour = kWindowWarm + (kWindowCool - kWindowWarm) * t;
+    w.intensity = 0.5f + rng.uniform();
+    // Two rooms in five have a curtain partly drawn, over a fifth to four fifths of the window.
+    const bool curtain = rng.uniform() < 0.4f;
+    w.curtainShare = curtain ? 0.2f + 0.6f * rng.uniform() : 0.0f;
+    w.curtainFromLeft = rng.uniform() < 0.5f;
+    const float warmth = rng.uniform();
+    w.curtainTint = Vec3f{1.25f, 0.95f, 0.7f} + (Vec3f{0.85f, 1.0f, 1.3f} - Vec3f{1.25f, 0.95f, 0.7f}) * warmth;
+    w.noiseKey = rng.next();
+    return w;
+}
+
+/// Smooth value noise in [0, 1] at (x, y) (units of its lattice): hashed lattice values blended by
+/// a smoothstep, mean 1/2 (the thesis's per-window Perlin noise, as a cheaper value noise).
+URBIS_HD inline float windowNoise(uint32_t key, float x, float y) {
+    const float fx = floorf(x), fy = floorf(y);
+    const int ix = int(fx), iy = int(fy);
+    const float tx = x - fx, ty = y - fy;
+    const float sx = tx * tx * (3.0f - 2.0f * tx), sy = ty * ty * (3.0f - 2.0f * ty);
+    const auto at = [&](int dx, int dy) { return hashToUnit(hash3(key, uint32_t(ix + dx), uint32_t(iy + dy))); };
+    const float bottom = at(0, 0) + (at(1, 0) - at(0, 0)) * sx, top = at(0, 1) + (at(1, 1) - at(0, 1)) * sx;
+    return bottom + (top - bottom) * sy;
+}
+
+/// The part of a cell's opening that emits (wall coordinates, metres): the glass, above a curtain
+/// wall's spandrel.
+struct WindowRect {
+    float u0, u1, v0, v1;
+    URBIS_HD float area() const { return (u1 - u0) * (v1 - v0); }
+};
+
+URBIS_HD inline WindowRect windowRect(const WallRecord& wall, const CellLayout& c) {
+    const float split = wall.style == WallStyle::Curtain ? c.v0 + wall.sillHeight : c.v0;
+    return {c.ou0, c.ou1, fmaxf(c.ov0, split), c.ov1};
+}
+
+/// Whether the cell's room is lit.
+URBIS_HD inline bool cellLit(const WallRecord& wall, const CellLayout& c) {
+    return c.roomMaterial == wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit);
+}
+
+/// Radiance of a lit room seen through the window's glass plane at (u, v) (wall coordinates), before
+/// the pane: `room` (the lit room's emission, its luminance the scale) times the look's colour and
+/// intensity, a curtain's share dimmed and tinted, and the noise (0.6 to 1.4, mean 1).
+URBIS_HD inline Vec3f windowRadiance(const WindowLook& w, const WindowRect& r, Vec3f room, float u, float v) {
+    Vec3f L = w.colour * (luminance(room) * w.intensity);
+    const float across = w.curtainFromLeft ? u - r.u0 : r.u1 - u;
+    if (across < w.curtainShare * (r.u1 - r.u0)) L = L * w.curtainTint * kCurtainTransmission;
+    return L * (0.6f + 0.8f * windowNoise(w.noiseKey, u * (1.0f / kWindowNoiseScale), v * (1.0f / kWindowNoiseScale)));
+}
+
+/// Expected flux of a lit window through its glass plane (before the pane), renderer units: pi
+/// times its area times its mean luminance (the noise's mean is 1; a curtain's share is dimmed).
+URBIS_HD inline float windowPower(const WindowLook& w, const WindowRect& r, Vec3f room) {
+    const float curtain = 1.0f - w.curtainShare + w.curtainShare * kCurtainTransmission * luminance(w.curtainTint);
+    return kPi * r.area() * luminance(room) * w.intensity * curtain;
+}
+
+/// Cells of a wall record's tile.
+URBIS_HD inline uint32_t tileCellCount(const WallRecord& wall) {
+    return uint32_t(wall.tileSlotEnd() - int(wall.slot0)) * uint32_t(wall.tileFloorEnd() - int(wall.floor0));
+}
+
+/// What a pane lets through at `cosine` with its normal: its tint times one minus its reflectance.
+URBIS_HD inline Vec3f glassTransmission(const Material& glass, float cosine) {
+    return glass.albedo * (1.0f - glassFresnel(glass, cosine));
+}
+
+/// w of the windows' glass plane (wall coordinates).
+URBIS_HD inline float glassPlaneW(const WallRecord& wall) { return -wall.reveal; }
+
+/// A lit window of `wall` seen from `from` with three uniform numbers: a cell of the tile (uniform:
+/// an unlit one gives false), a uniform point of its glass. Fills the unit direction, the distance,
+/// the solid-angle pdf and the radiance arriving through the pane (`room`: the lit room's emission,
+/// `glass`: the pane's material). Only from in front of the glass plane.
+URBIS_HD inline bool sampleWallWindows(const WallRecord& wall, Vec3f room, const Material& glass, Vec3f from, float u0,
+                                       float u1, float u2, Vec3f& dir, float& distance, float& pdf, Vec3f& radiance) {
+    const uint32_t n = tileCellCount(wall), across = uint32_t(wall.tileSlotEnd() - int(wall.slot0));
+    if (n == 0) return false;
+    const uint32_t k = uint32_t(fminf(u0 * float(n), float(n - 1)));
+    const uint32_t floor = wall.floor0 + k / across, slot = wall.slot0 + k % across;
+    const CellLayout c = cellLayout(wall, floor, slot);
+    if (!cellLit(wall, c)) return false;
+    const WindowRect r = windowRect(wall, c);
+    const float u = r.u0 + (r.u1 - r.u0) * u1, v = r.v0 + (r.v1 - r.v0) * u2;
+    const Vec3f toPoint = wall.worldFromWall(u, v, glassPlaneW(wall)) - from;
+    distance = length(toPoint);
+    if (!(distance > 0.0f)) return false;
+    dir = toPoint / distance;
+    const float cosine = -dot(dir, wall.normal);
+    if (!(cosine > 0.0f) || !(r.area() > 0.0f)) return false;
+    pdf = distance * distance / (cosine * r.area() * float(n));
+    radiance = windowRadiance(windowLook(wall, floor, slot), r, room, u, v) * glassTransmission(glass, cosine);
+    return true;
+}
+
+/// Solid-angle pdf with which sampleWallWindows returns unit direction `dir` from `from`: where the
+/// ray meets the glass plane in front of it, inside the glass of a lit cell of the tile.
+URBIS_HD inline float wallWindowsPdf(const WallRecord& wall, Vec3f from, Vec3f dir) {
+    const float cosine = -dot(dir, wall.normal);
+    const float height = dot(from - wall.origin, wall.normal) - glassPlaneW(wall);
+    if (!(cosine > 0.0f) || !(height > 0.0f)) return 0.0f;
+    const float t = height / cosine;
+    const Vec3f rel = from + dir * t - wall.origin;
+    const float u = dot(rel, wall.axisU), v = rel.y;
+    const float fs = floorf((u - wall.gridU) / wall.slotWidth), ff = floorf((v - wall.gridV) / wall.floorHeight);
+    if (!(fs >= float(wall.slot0) && fs < float(wall.tileSlotEnd()) && ff >= float(wall.floor0) &&
+          ff < float(wall.tileFloorEnd())))
+        return 0.0f;
+    const CellLayout c = cellLayout(wall, uint32_t(ff), uint32_t(fs));
+    const WindowRect r = windowRect(wall, c);
+    if (!cellLit(wall, c) || u < r.u0 || u > r.u1 || v < r.v0 || v > r.v1 || !(r.area() > 0.0f)) return 0.0f;
+    return t * t / (cosine * r.area() * float(tileCellCount(wall)));
+}
+
+/// The radiance a lit room of `wall` shows to a ray with unit direction `dir` through `origin` that
+/// meets it at wall coordinates `hitUv`: the room's cell, its look at the point where the ray's
+/// line crosses the glass plane (where sampleWallWindows evaluates it).
+URBIS_HD inline Vec3f litRoomRadiance(const WallRecord& wall, Vec3f room, Vec3f origin, Vec3f dir, Vec2f hitUv) {
+    const float cols = float(wall.slots) - 1.0f, rows = float(wall.floors) - 1.0f;
+    const uint32_t slot = uint32_t(fminf(fmaxf(floorf((hitUv.x - wall.gridU) / wall.slotWidth), 0.0f), cols));
+    const uint32_t floor = uint32_t(fminf(fmaxf(floorf((hitUv.y - wall.gridV) / wall.floorHeight), 0.0f), rows));
+    const float dn = dot(dir, wall.normal);
+    Vec2f at = hitUv;
+    if (fabsf(dn) > 1e-6f) {
+        const Vec3f rel = origin - wall.origin;
+        const Vec3f p = rel + dir * ((glassPlaneW(wall) - dot(rel, wall.normal)) / dn);
+        at = {dot(p, wall.axisU), p.y};
+    }
+    const CellLayout c = cellLayout(wall, floor, slot);
+    return windowRadiance(windowLook(wall, floor, slot), windowRect(wall, c), room, at.x, at.y);
+}
+
+/// Expected flux of the lit windows of a wall record's tile (windowPower summed over its lit cells).
+URBIS_HD inline float wallWindowsPower(const WallRecord& wall, Vec3f room) {
+    float sum = 0.0f;
+    for (int f = int(wall.floor0); f < wall.tileFloorEnd(); ++f)
+        for (int s = int(wall.slot0); s < wall.tileSlotEnd(); ++s) {
+            const CellLayout c = cellLayout(wall, uint32_t(f), uint32_t(s));
+            if (cellLit(wall, c)) sum += windowPower(windowLook(wall, uint32_t(f), uint32_t(s)), windowRect(wall, c), room);
+        }
+    return sum;
+}
+
+/// Bounds of a wall record's lit windows for the light BVH: the tile's glass plane, its flux `phi`,
+/// one-sided about the outward normal with a hemisphere of emission (a Lambertian plane).
+URBIS_HD inline LightBounds wallWindowsLightBounds(const WallRecord& wall, float phi) {
+    LightBounds b;
+    const float w = glassPlaneW(wall);
+    b.bounds = {wall.worldFromWall(wall.tileU0(), wall.tileV0(), w), wall.worldFromWall(wall.tileU0(), wall.tileV0(), w)};
+    b.bounds.extend(wall.worldFromWall(wall.tileU1(), wall.tileV1(), w));
+    b.axis = wall.normal;
+    b.cosThetaO = 1.0f;
+    b.cosThetaE = 0.0f;
+    b.phi = phi;
+    return b;
+}
+
+} // namespace urbis
