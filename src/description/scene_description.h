@@ -87,8 +87,8 @@ struct GeometryDescription {
     bool streets = true;               ///< roads, sidewalks, ground cover, water and lamps; false: buildings on the bare ground
 };
 
-/// The integrator and its parameters. `lightSampler` picks among the lights ("uniform" or
-/// "power"); the path tracer is the one kind today.
+/// The integrator and its parameters. `lightSampler` picks among the lights ("uniform", "power",
+/// "bvh" or "colliders"); the path tracer is the one kind today.
 struct IntegratorDescription {
     std::string kind = "path";
     uint32_t spp = 16;
@@ -123,6 +123,6 @@ struct SceneDescription {
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.
 inline constexpr const char* kIntegratorKinds[] = {"path"};
-inline constexpr const char* kLightSamplers[] = {"uniform", "power"};
+inline constexpr const char* kLightSamplers[] = {"uniform", "power", "bvh", "colliders"};  // in LightSamplerKind order
 
 } // namespace urbis

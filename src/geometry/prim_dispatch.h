@@ -68,6 +68,7 @@ URBIS_HD inline SurfaceHit surfaceOf(const SceneView& scene, const PrimHit& hit,
         using Record = typename decltype(kind)::Record;
         out = KindIntersector<Record>::surface(scene, index, kindArray<Record>(scene)[index], hit, ray);
         out.kind = kind.index;
+        out.index = index;
         return true;
     });
     return out;

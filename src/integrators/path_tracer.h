@@ -74,6 +74,10 @@ URBIS_HD inline Ray shadowRayTowards(Vec3f origin, const LightSample& ls) {
     return Ray{origin, ls.dir, 0.0f, ls.distance * (1.0f - 1e-4f)};
 }
 
+/// Where the light samples of `vertex` are drawn from, for the light sampler: also where the pick
+/// probability of what its BSDF sample finds is asked.
+URBIS_HD inline LightSampleContext lightContext(const PathVertex& vertex) { return {vertex.origin, vertex.normal}; }
+
 /// One light sample from `vertex`: the shadow ray towards the light and what it adds if nothing
 /// blocks it. Returns false when it adds nothing (then no ray is traced).
 URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSettings& settings, const PathVertex& vertex,
@@ -82,7 +86,7 @@ URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSetting
     // there is more than one, the triangle of a surface.
     const float uLight = lightCount(scene.lights) > 1 ? rng.draw() : 0.0f;
     float pmf;
-    const uint32_t index = selectLight(scene.lights, settings.lightSampler, uLight, pmf);
+    const uint32_t index = selectLight(scene.lights, settings.lightSampler, lightContext(vertex), uLight, pmf);
     if (!(pmf > 0.0f)) return false;
     LightSample ls;
     const LightRecord light = lightRecord(scene.lights, index);
@@ -132,7 +136,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             float skyWeight = 1.0f;
             if (!bounce.countsInFull && lights.skyLight != kNoLight)
                 skyWeight = bsdfFoundWeight(bounce, LightKind::Sky, settings.lightSamples,
-                                            lightSelectionPmf(lights, settings.lightSampler, lights.skyLight),
+                                            lightSelectionPmf(lights, settings.lightSampler, lightContext(vertex), lights.skyLight),
                                             lightPdf(scene, sky, dir, 0.0f, 0.0f));
             out.radiance += throughput * skyRadiance(scene.sky, dir) * skyWeight;
             // The camera ray (depth 0) does not show the sun's disk.
@@ -140,7 +144,8 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                 float sunWeight = 1.0f;
                 if (!bounce.countsInFull)
                     sunWeight = bsdfFoundWeight(bounce, LightKind::Sun, settings.lightSamples,
-                                                lightSelectionPmf(lights, settings.lightSampler, lights.sunLight),
+                                                lightSelectionPmf(lights, settings.lightSampler, lightContext(vertex),
+                                                                  lights.sunLight),
                                                 sunPdf(scene.sun));
                 out.radiance += throughput * scene.sun.radiance * sunWeight;
             }
@@ -149,12 +154,13 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             const Material& material = scene.materials[hit.material];
             const Vec3f dir = normalize(ray.dir);
             if (maxComponent(material.emission) > 0.0f) {
-                // An emitter found by BSDF sampling: weighed against its light samples where it has any.
-                const uint32_t light = hit.material < lights.materialCount ? lights.lightOfMaterial[hit.material] : kNoLight;
+                // An emitter found by BSDF sampling: weighed against its light samples where it has any,
+                // whose pick probability is the previous vertex's (still in `vertex`).
+                const uint32_t light = hit.kind == kPrimKindOf<Triangle> ? lightOfTriangle(lights, hit.index) : kNoLight;
                 float weight = 1.0f;
                 if (light != kNoLight && !bounce.countsInFull)
                     weight = bsdfFoundWeight(bounce, LightKind::EmissiveSurface, settings.lightSamples,
-                                             lightSelectionPmf(lights, settings.lightSampler, light),
+                                             lightSelectionPmf(lights, settings.lightSampler, lightContext(vertex), light),
                                              lightPdf(scene, lightRecord(lights, light), dir, hit.t * length(ray.dir),
                                                       dot(hit.normal, dir)));
                 out.radiance += throughput * material.emission * weight;
