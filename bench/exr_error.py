@@ -47,7 +47,7 @@ def read_exr(path):
     lines = COMPRESSION_LINES[compression]
     chunks = (height + lines - 1) // lines
     offsets = struct.unpack_from(f"<{chunks}Q", data, pos)
-    sizes = [4 if t == 2 else 2 for _, t in channels]  # FLOAT 4 bytes, HALF 2 (UINT 4)
+    sizes = [2 if t == 1 else 4 for _, t in channels]  # HALF 2 bytes; UINT and FLOAT 4
     out = {name: [] for name, _ in channels}
     for offset in offsets:
         y, size = struct.unpack_from("<ii", data, offset)

@@ -40,7 +40,9 @@ void expectChoiceFits(const LightsView& lights, LightSamplerKind kind, const Lig
         float pmf;
         const uint32_t i = selectLight(lights, kind, ctx, rng.draw(), pmf);
         ASSERT_LT(i, lights.count);
-        if (s < 20000) ASSERT_EQ(pmf, lightSelectionPmf(lights, kind, ctx, i)) << "light " << i;
+        if (s < 5000) {
+            ASSERT_EQ(pmf, lightSelectionPmf(lights, kind, ctx, i)) << "light " << i;
+        }
         observed[i] += 1;
     }
     const chi2::Outcome outcome = chi2::pearson(observed, expected);
@@ -61,7 +63,7 @@ TEST(LightBvh, ChoiceFitsPmf) {
     uint32_t seed = 3;
     for (const LightSampleContext& ctx : kPoints)
         for (LightSamplerKind kind : {LightSamplerKind::Bvh, LightSamplerKind::Colliders})
-            expectChoiceFits(view.lights, kind, ctx, 300000, seed++);
+            expectChoiceFits(view.lights, kind, ctx, 100000, seed++);
 }
 
 // The pmfs of every light sum to one at many points (with infinite lights: the sun and the sky,
@@ -78,7 +80,7 @@ TEST(LightBvh, PmfsSumToOne) {
     ASSERT_EQ(lights.infiniteCount, 2u);
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    for (int k = 0; k < 200; ++k) {
+    for (int k = 0; k < 60; ++k) {
         const Vec3f p{(unit(rng) - 0.5f) * 100.0f, unit(rng) * 10.0f, (unit(rng) - 0.5f) * 100.0f};
         const Vec3f n = k % 4 == 0 ? Vec3f{} : normalize(Vec3f{unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f});
         for (LightSamplerKind kind : {LightSamplerKind::Bvh, LightSamplerKind::Colliders}) {
@@ -103,6 +105,7 @@ TEST(LightBvh, NearLightIsLikelier) {
     test::addSquare(mesh, 1.0f, 5.0f, 1);
     mesh.add({Vec3f{49.5f, 5, -0.5f}, Vec3f{50.5f, 5, 0.5f}, Vec3f{50.5f, 5, -0.5f}}, {1, 1});
     Scene scene = Scene::build(mesh, {Material{}, test::emitter(Vec3f{10, 10, 10})});
+    scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     buildLights(scene);
     const LightsView lights = scene.view().lights;
     ASSERT_EQ(lights.count, 3u);

@@ -158,7 +158,15 @@ LightBounds unionLightBounds(const LightBounds& a, const LightBounds& b) {
     u.phi = a.phi + b.phi;
     u.cosThetaE = std::min(a.cosThetaE, b.cosThetaE);
     u.twoSided = a.twoSided || b.twoSided;
-    // The cone of normals holding both (pbrt-v4 Union(DirectionCone, DirectionCone)).
+    // The cone of normals holding both (pbrt-v4 Union(DirectionCone, DirectionCone)). Every
+    // direction, or one same cone, needs no trigonometry (most unions high in the tree, and the
+    // windows of one wall).
+    if (a.cosThetaO <= -1.0f || (b.cosThetaO == a.cosThetaO && b.axis.x == a.axis.x && b.axis.y == a.axis.y && b.axis.z == a.axis.z))
+        return u;
+    if (b.cosThetaO <= -1.0f) {
+        u.cosThetaO = -1.0f;
+        return u;
+    }
     const double thetaA = std::acos(std::clamp(double(a.cosThetaO), -1.0, 1.0));
     const double thetaB = std::acos(std::clamp(double(b.cosThetaO), -1.0, 1.0));
     const double thetaD = angleBetween(a.axis, b.axis);
