@@ -1,6 +1,7 @@
 """Relative MSE of EXR images against a reference (bench/many_lights.sh): the mean over pixels of
-(x - r)^2 / (r^2 + 1e-2), on luminance, with r the reference (the denominator's 1e-2 keeps black pixels
-from dominating; Rousselle et al. 2011 use the same form). Reads the scanline ZIP/ZIPS/uncompressed
+(x - r)^2 / (r^2 + 1e-2 m^2), on luminance, with r the reference and m its mean (Rousselle et al. 2011's
+form, whose 1e-2 keeps black pixels from dominating, made independent of the image's exposure: a night
+is far darker than 1). Reads the scanline ZIP/ZIPS/uncompressed
 EXRs that `urbis render --out X.exr` writes, with the standard library alone (no numpy or OpenEXR
 module on the machines this runs on).
 
@@ -81,7 +82,8 @@ def luminance(image):
 def rel_mse(reference, image):
     if len(reference) != len(image):
         sys.exit("images of different sizes")
-    return sum((x - r) ** 2 / (r * r + 1e-2) for x, r in zip(image, reference)) / len(reference)
+    eps = 1e-2 * (sum(reference) / len(reference)) ** 2
+    return sum((x - r) ** 2 / (r * r + eps) for x, r in zip(image, reference)) / len(reference)
 
 
 def main(argv):
