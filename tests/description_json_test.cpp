@@ -143,7 +143,7 @@ TEST(DescriptionJson, ProblemsNameTheFileAndTheKeyPath) {
         {R"({"film": 3})", "scene.json: film: expected an object"},
         {R"({"integrator": {"spp": true}})", "scene.json: integrator.spp: expected an integer"},
         {R"({"integrator": {"kind": "bdpt"}})", "scene.json: integrator.kind: expected one of path"},
-        {R"({"integrator": {"light_sampler": "bvh"}})", "scene.json: integrator.light_sampler: expected one of uniform, power"},
+        {R"({"integrator": {"light_sampler": "tree"}})", "scene.json: integrator.light_sampler: expected one of uniform, power, bvh, colliders"},
         {R"({"sun": {"elevation": 91}})", "scene.json: sun.elevation: 91 is out of range -90..90"},
         {R"({"sky": {"zenith": [1, 2]}})", "scene.json: sky.zenith: expected an array of 3 numbers"},
         {R"({"sky": {"zenith": [1, -2, 3]}})", "scene.json: sky.zenith[1]: -2 is out of range 0..1000000"},

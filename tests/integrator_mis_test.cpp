@@ -25,6 +25,8 @@ const Strategy kStrategies[] = {
     {"BSDF sampling alone", 0, LightSamplerKind::Power, true},
     {"MIS, power sampler", 1, LightSamplerKind::Power, true},
     {"MIS, uniform sampler", 1, LightSamplerKind::Uniform, true},
+    {"MIS, light BVH", 1, LightSamplerKind::Bvh, true},
+    {"MIS, colliders", 1, LightSamplerKind::Colliders, true},
     {"MIS, 3 light samples", 3, LightSamplerKind::Power, true},
     {"MIS, sky table not compensated", 1, LightSamplerKind::Power, true, false},
     {"lights not built (the sun alone is light-sampled)", 1, LightSamplerKind::Power, false},

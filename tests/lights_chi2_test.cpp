@@ -48,6 +48,13 @@ chi2::DirectionBins skyMapBins(int thetaBins, int phiBins, double cosMin, int su
     return bins;
 }
 
+/// The first light of an emitting triangle of `material` (kNoLight if none).
+uint32_t firstLightOf(const Scene& scene, uint32_t material) {
+    for (const EmitterTriangle& e : scene.emitterTriangles)
+        if (scene.triangleInfo[e.triangle].material == material) return e.light;
+    return kNoLight;
+}
+
 /// Lights: a sun, the default sky, and three emitting surfaces of different sizes and radiance.
 Scene lightsScene() {
     TriangleMesh mesh;
@@ -111,19 +118,19 @@ TEST(LightsChi2, SunDisk) {
         [&](Vec3f d) { return double(lightPdf(view, sun, d, 0, 0)); }, bins, kSamples, 12);
 }
 
-// The first surface (a square and a triangle of one material) seen from a point below it, and
-// the brightest one from the side: directions binned about the way to each.
+// A triangle of the first surface seen from a point below it, and of the brightest one from the
+// side: directions binned about the way to each.
 TEST(LightsChi2, EmissiveSurfaces) {
     Scene scene = lightsScene();
     const SceneView view = scene.view();
-    ASSERT_EQ(scene.emissiveSurfaces.size(), 3u);
+    ASSERT_EQ(scene.emissiveSurfaces.size(), 7u);  // one per emitting triangle
     for (uint32_t material : {1u, 3u}) {
-        const uint32_t index = view.lights.lightOfMaterial[material];
+        const uint32_t index = firstLightOf(scene, material);
         ASSERT_NE(index, kNoLight);
         const LightRecord light = lightRecord(view.lights, index);
         const EmissiveSurface& surface = view.lights.surfaces[light.index];
         const Vec3f from = material == 1 ? Vec3f{0.5f, 0.0f, 0.2f} : Vec3f{1.0f, -1.0f, 0.5f};
-        const Bounds3f box = lightBounds(scene, light);
+        const Bounds3f box = lightBoundsOf(scene, light).bounds;
         chi2::DirectionBins bins;
         bins.frame = Frame::fromZ(normalize(box.centre() - from));
         bins.cosMin = material == 1 ? 0.2 : 0.5;
@@ -156,19 +163,19 @@ TEST(LightsChi2, LightSamplerChoice) {
     Scene scene = lightsScene();
     const SceneView view = scene.view();
     const uint32_t n = lightCount(view.lights);
-    ASSERT_EQ(n, 5u);  // sun, sky, three surfaces
+    ASSERT_EQ(n, 9u);  // sun, sky, seven emitting triangles
     for (LightSamplerKind kind : {LightSamplerKind::Uniform, LightSamplerKind::Power}) {
         std::vector<double> observed(n, 0.0), expected(n, 0.0);
         double total = 0;
-        for (uint32_t i = 0; i < n; ++i) total += expected[i] = lightSelectionPmf(view.lights, kind, i);
+        for (uint32_t i = 0; i < n; ++i) total += expected[i] = lightSelectionPmf(view.lights, kind, {}, i);
         EXPECT_NEAR(total, 1.0, 1e-5);
         for (double& e : expected) e *= kSamples;
         SampleStream rng{21, 0, 0};
         for (uint32_t s = 0; s < kSamples; ++s) {
             float pmf;
-            const uint32_t i = selectLight(view.lights, kind, rng.draw(), pmf);
+            const uint32_t i = selectLight(view.lights, kind, {}, rng.draw(), pmf);
             ASSERT_LT(i, n);
-            EXPECT_FLOAT_EQ(pmf, lightSelectionPmf(view.lights, kind, i));
+            EXPECT_FLOAT_EQ(pmf, lightSelectionPmf(view.lights, kind, {}, i));
             observed[i] += 1;
         }
         const chi2::Outcome outcome = chi2::pearson(observed, expected);
@@ -176,9 +183,9 @@ TEST(LightsChi2, LightSamplerChoice) {
     }
     // By power the small bright source is picked more often than the large dim one, which has 36
     // times its area but a fortieth of its radiance.
-    const uint32_t bright = view.lights.lightOfMaterial[3], dim = view.lights.lightOfMaterial[2];
-    EXPECT_GT(lightSelectionPmf(view.lights, LightSamplerKind::Power, bright),
-              lightSelectionPmf(view.lights, LightSamplerKind::Power, dim));
+    const uint32_t bright = firstLightOf(scene, 3), dim = firstLightOf(scene, 2);
+    EXPECT_GT(lightSelectionPmf(view.lights, LightSamplerKind::Power, {}, bright),
+              lightSelectionPmf(view.lights, LightSamplerKind::Power, {}, dim));
 }
 
 // Each light's pdf integrates to one over the directions it covers (the sky's over the sphere,
@@ -194,17 +201,18 @@ TEST(LightsPdf, IntegratesToOne) {
     disk.cosMin = scene.sun.cosHalfAngle;
     disk.smooth = false;
     EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sun, d, 0, 0)); }, disk), 1.0, 1e-3);
-    const LightRecord bright = lightRecord(view.lights, view.lights.lightOfMaterial[3]);
-    const TriangleLight* triangles = view.lights.triangles + view.lights.surfaces[bright.index].firstTriangle;
+    const LightRecord bright = lightRecord(view.lights, firstLightOf(scene, 3));
+    const EmissiveSurface& brightSurface = view.lights.surfaces[bright.index];
+    const TriangleLight* triangles = view.lights.triangles + brightSurface.firstTriangle;
     const Vec3f from{1.0f, -1.0f, 0.5f};
     chi2::DirectionBins towards;
-    towards.frame = Frame::fromZ(normalize(lightBounds(scene, bright).centre() - from));
+    towards.frame = Frame::fromZ(normalize(lightBoundsOf(scene, bright).bounds.centre() - from));
     towards.cosMin = 0.5;
     towards.thetaBins = towards.phiBins = 64;
     towards.smooth = false;
     auto pdf = [&](Vec3f d) {
         double sum = 0;
-        for (int i = 0; i < 2; ++i) {
+        for (uint32_t i = 0; i < brightSurface.triangleCount; ++i) {
             const float distance = hitDistance(triangles[i], from, d);
             const Vec3f n = normalize(cross(triangles[i].p1 - triangles[i].p0, triangles[i].p2 - triangles[i].p0));
             if (distance > 0) sum += double(lightPdf(view, bright, d, distance, dot(n, d)));

@@ -37,13 +37,14 @@ TEST(LightsMis, WeightsOfBothStrategiesSumToOne) {
     int checked = 0;
     for (const Material& m : {Material{}, glossy})
         for (uint32_t lightSamples : {1u, 3u})
-            for (LightSamplerKind kind : {LightSamplerKind::Uniform, LightSamplerKind::Power})
+            for (LightSamplerKind kind : {LightSamplerKind::Uniform, LightSamplerKind::Power, LightSamplerKind::Bvh,
+                                          LightSamplerKind::Colliders})
                 for (uint32_t light = 0; light < lightCount(view.lights); ++light)
                     for (int i = 0; i < 50; ++i) {
                         const LightRecord record = lightRecord(view.lights, light);
                         LightSample s;
                         if (!sampleLight(view, record, from, rng.draw(), rng.draw(), rng.draw(), s)) continue;
-                        const float pmf = lightSelectionPmf(view.lights, kind, light);
+                        const float pmf = lightSelectionPmf(view.lights, kind, {from, n}, light);
                         const float lightPdfTotal = pmf * s.pdf, bsdf = bsdfPdf(m, wo, s.dir, n);
                         if (!(bsdf > 0.0f)) continue;
                         // The same direction as the BSDF would find it: the light's pdf from the hit.

@@ -169,7 +169,7 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
     range(bind(cmd, "--rr-survival", v.integrator.rrSurvival, "Largest survival probability of Russian roulette",
                [](SceneDescription& d, float p) { d.integrator.rrSurvival = p; }),
           0.01, 1.0);
-    if (CLI::Option* sampler = bind(cmd, "--light-sampler", v.integrator.lightSampler, "How lights are picked: uniform or power",
+    if (CLI::Option* sampler = bind(cmd, "--light-sampler", v.integrator.lightSampler, "How lights are picked: uniform, power, bvh (the light BVH) or colliders (the thesis's)",
                                     [](SceneDescription& d, const std::string& s) { d.integrator.lightSampler = s; }))
         sampler->check(CLI::IsMember(std::vector<std::string>(std::begin(kLightSamplers), std::end(kLightSamplers))))
             ->capture_default_str();

@@ -110,8 +110,8 @@ struct GeometryDescription {
     std::string traffic = "auto";      ///< the side traffic keeps: "auto" (by the city's place), "right" or "left"
 };
 
-/// The integrator and its parameters. `lightSampler` picks among the lights ("uniform" or
-/// "power"); the path tracer is the one kind today.
+/// The integrator and its parameters. `lightSampler` picks among the lights ("uniform", "power",
+/// "bvh" or "colliders"); the path tracer is the one kind today.
 struct IntegratorDescription {
     std::string kind = "path";
     uint32_t spp = 16;
@@ -149,7 +149,7 @@ struct SceneDescription {
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.
 inline constexpr const char* kIntegratorKinds[] = {"path"};
-inline constexpr const char* kLightSamplers[] = {"uniform", "power"};
+inline constexpr const char* kLightSamplers[] = {"uniform", "power", "bvh", "colliders"};  // in LightSamplerKind order
 inline constexpr const char* kTrafficSides[] = {"auto", "right", "left"};
 
 } // namespace urbis

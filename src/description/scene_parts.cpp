@@ -63,7 +63,8 @@ RenderSettings renderSettingsOf(const IntegratorDescription& integrator, const F
     settings.maxDepth = integrator.maxDepth;
     settings.rrDepth = integrator.rrDepth;
     settings.rrSurvival = integrator.rrSurvival;
-    settings.lightSampler = integrator.lightSampler == "uniform" ? LightSamplerKind::Uniform : LightSamplerKind::Power;
+    for (uint32_t i = 0; i < std::size(kLightSamplers); ++i)
+        if (integrator.lightSampler == kLightSamplers[i]) settings.lightSampler = LightSamplerKind(i);
     settings.lightSamples = integrator.lightSamples;
     return settings;
 }

@@ -26,7 +26,7 @@ struct SurfaceHit {
     uint32_t material = 0;
     uint32_t object = 0;           ///< 0 for the ground, building index + 1 otherwise
     SurfacePart part = SurfacePart::Whole;
-    uint32_t index = 0;            ///< the record's, in its kind's array (which wall, which lamp)
+    uint32_t index = 0;            ///< of the record in its kind's array (which wall, which lamp; an emitting triangle's light: lights/light_sampler.h)
 
     URBIS_HD bool valid() const { return kind != kNoPrimKind; }
     /// The shading frame: z the normal, x the unit tangent.

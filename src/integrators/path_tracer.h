@@ -38,6 +38,10 @@ struct PathVertex {
     bool bsdfStrategy = false;   ///< whether the path samples its BSDF here (not at maxDepth): MIS counts it
 };
 
+/// Where the light samples of `vertex` are drawn from, for the light sampler: also where the pick
+/// probability of what its BSDF sample finds is asked.
+URBIS_HD inline LightSampleContext lightContext(const PathVertex& vertex) { return {vertex.origin, vertex.normal}; }
+
 /// How the BSDF sample that found an emitter was drawn: MIS weighs what it finds.
 struct BounceInfo {
     float pdf = 0;        ///< solid angle
@@ -46,14 +50,14 @@ struct BounceInfo {
     /// panes since: a lit room it finds is a window that the vertex's light samples could reach
     /// through the pane (lights/window_light.h), so MIS weighs it though countsInFull is set.
     bool windowPath = false;
-    Vec3f from{};
+    LightSampleContext from{};  ///< the vertex the BSDF sample left: where the pick probability of what it finds is asked
 };
 
 /// The BounceInfo of the ray that a BSDF sample `bsdf` of `material` sends on from `vertex`, after a
 /// ray of `before`: a pane's straight transmission keeps the window path of the ray it continues.
 URBIS_HD inline BounceInfo bounceAfter(const BounceInfo& before, const PathVertex& vertex, const Material& material,
                                        const BsdfSample& bsdf) {
-    if (!bsdf.specular) return {bsdf.pdf, false, true, vertex.origin};
+    if (!bsdf.specular) return {bsdf.pdf, false, true, lightContext(vertex)};
     const bool throughPane = material.kind == MaterialKind::Glass && dot(bsdf.dir, vertex.normal) < 0.0f;
     return {before.pdf, true, throughPane && before.windowPath, before.from};
 }
@@ -94,7 +98,7 @@ URBIS_HD inline Vec3f foundEmission(const SceneView& scene, const RenderSettings
     const LightsView& lights = scene.lights;
     if (hit.kind == kPrimKindOf<LampRecord> && hit.part == SurfacePart::LampGlass && lights.firstLampLight != kNoLight) {
         const float weight = bsdfFoundWeight(bounce, LightKind::Point, settings.lightSamples,
-                                             lightSelectionPmf(lights, settings.lightSampler, lights.firstLampLight + hit.index), 0.0f);
+                                             lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.firstLampLight + hit.index), 0.0f);
         return lampGlassRadiance(lights.lampLights[hit.index], -dir) * weight;
     }
     if (!(maxComponent(material.emission) > 0.0f)) return {};
@@ -103,15 +107,15 @@ URBIS_HD inline Vec3f foundEmission(const SceneView& scene, const RenderSettings
         if (hit.material != wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)) return material.emission;
         const Vec3f L = litRoomRadiance(wall, material.emission, ray.origin, dir, hit.uv);
         if (!bounce.windowPath || lights.firstWallLight == kNoLight || settings.lightSamples == 0) return L;
-        const float pdf = lightSelectionPmf(lights, settings.lightSampler, lights.firstWallLight + hit.index) *
-                          wallWindowsPdf(wall, bounce.from, dir);
+        const float pdf = lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.firstWallLight + hit.index) *
+                          wallWindowsPdf(wall, bounce.from.p, dir);
         return pdf > 0.0f ? L * powerHeuristic(1.0f, bounce.pdf, float(settings.lightSamples), pdf) : L;
     }
     // An emitter found by BSDF sampling: weighed against its light samples where it has any.
-    const uint32_t light = hit.material < lights.materialCount ? lights.lightOfMaterial[hit.material] : kNoLight;
+    const uint32_t light = hit.kind == kPrimKindOf<Triangle> ? lightOfTriangle(lights, hit.index) : kNoLight;
     if (light == kNoLight || bounce.countsInFull) return material.emission;
     return material.emission * bsdfFoundWeight(bounce, LightKind::EmissiveSurface, settings.lightSamples,
-                                               lightSelectionPmf(lights, settings.lightSampler, light),
+                                               lightSelectionPmf(lights, settings.lightSampler, bounce.from, light),
                                                lightPdf(scene, lightRecord(lights, light), dir, hit.t * length(ray.dir),
                                                         dot(hit.normal, dir)));
 }
@@ -131,7 +135,7 @@ URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSetting
     // there is more than one, the triangle of a surface or the window of a wall, the point of anything but a lamp.
     const float uLight = lightCount(scene.lights) > 1 ? rng.draw() : 0.0f;
     float pmf;
-    const uint32_t index = selectLight(scene.lights, settings.lightSampler, uLight, pmf);
+    const uint32_t index = selectLight(scene.lights, settings.lightSampler, lightContext(vertex), uLight, pmf);
     if (!(pmf > 0.0f)) return false;
     LightSample ls;
     const LightRecord light = lightRecord(scene.lights, index);
@@ -182,7 +186,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             float skyWeight = 1.0f;
             if (!bounce.countsInFull && lights.skyLight != kNoLight)
                 skyWeight = bsdfFoundWeight(bounce, LightKind::Sky, settings.lightSamples,
-                                            lightSelectionPmf(lights, settings.lightSampler, lights.skyLight),
+                                            lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.skyLight),
                                             lightPdf(scene, sky, dir, 0.0f, 0.0f));
             out.radiance += throughput * skyRadiance(scene.sky, dir) * skyWeight;
             // The camera ray (depth 0) does not show the sun's disk.
@@ -190,7 +194,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                 float sunWeight = 1.0f;
                 if (!bounce.countsInFull)
                     sunWeight = bsdfFoundWeight(bounce, LightKind::Sun, settings.lightSamples,
-                                                lightSelectionPmf(lights, settings.lightSampler, lights.sunLight),
+                                                lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.sunLight),
                                                 sunPdf(scene.sun));
                 out.radiance += throughput * scene.sun.radiance * sunWeight;
             }
@@ -198,7 +202,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             if (sunContains(scene.night.moon, dir))
                 out.radiance += throughput * scene.night.moon.radiance *
                                 bsdfFoundWeight(bounce, LightKind::Moon, settings.lightSamples,
-                                                lightSelectionPmf(lights, settings.lightSampler, lights.moonLight), 0.0f);
+                                                lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.moonLight), 0.0f);
             out.radiance += throughput * nightSkyRadiance(scene.night.stars, dir);
             pathEnds = true;
         } else {

@@ -1,6 +1,7 @@
 #include "lights/light_build.h"
 
 #include "lights/lamp_light.h"
+#include "lights/light_bvh_build.h"
 #include "lights/sky_light.h"
 #include "lights/sun_light.h"
 #include "lights/window_light.h"
@@ -10,8 +11,6 @@
 #include <cmath>
 
 #include <tbb/parallel_for.h>
-
-#include <map>
 
 namespace urbis {
 
@@ -23,7 +22,7 @@ struct BuiltLights {
     std::vector<float> powerTable;          ///< buildPiecewiseConstant1D over records' power
     std::vector<EmissiveSurface> surfaces;
     std::vector<TriangleLight> triangles;
-    std::vector<uint32_t> lightOfMaterial;
+    std::vector<EmitterTriangle> emitters;
     std::vector<LampEmitter> lampLights;
     std::vector<float> skyTable;            ///< buildPiecewiseConstant2D over the sky
     LightListInfo info;
@@ -83,43 +82,25 @@ std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, b
     return func;
 }
 
-/// One EmissiveSurface per emitting material of the triangles (in material order).
-void addEmissiveSurfaces(const Scene& scene, BuiltLights& lights, float& area) {
+/// One light per emitting triangle (in triangle order, so emitterTriangles is sorted): a light of
+/// one triangle has bounds the size of a lamp's head or a window, which is what lets the light BVH
+/// tell near emitters from far ones (docs/lights.md § Emitting triangles).
+void addEmissiveTriangles(const Scene& scene, BuiltLights& lights) {
     const std::vector<bool> outside = materialsOutsideTriangles(scene);
-    std::map<uint32_t, std::vector<uint32_t>> trianglesOf;
     for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
         const uint32_t m = scene.triangleInfo[i].material;
-        if (m < scene.materials.size() && !outside[m] && maxComponent(scene.materials[m].emission) > 0.0f)
-            trianglesOf[m].push_back(i);
-    }
-    lights.lightOfMaterial.assign(scene.materials.size(), kNoLight);
-    area = 0;
-    for (const auto& [material, list] : trianglesOf) {
-        EmissiveSurface surface{scene.materials[material].emission, uint32_t(lights.triangles.size()), 0, 0.0f};
-        std::vector<double> areas;
-        double total = 0;
-        for (uint32_t i : list) {
-            const Triangle& t = scene.triangles[i];
-            const double a = 0.5 * double(length(cross(t.p1 - t.p0, t.p2 - t.p0)));
-            if (!(a > 0)) continue;
-            areas.push_back(a);
-            total += a;
-            lights.triangles.push_back(TriangleLight{t.p0, t.p1, t.p2, 0.0f});
-        }
-        if (areas.empty()) continue;
-        double running = 0;
-        for (size_t k = 0; k < areas.size(); ++k) {
-            running += areas[k];
-            lights.triangles[surface.firstTriangle + k].cdf = k + 1 == areas.size() ? 1.0f : float(running / total);
-        }
-        surface.triangleCount = uint32_t(areas.size());
-        surface.area = float(total);
-        lights.lightOfMaterial[material] = uint32_t(lights.records.size());
+        if (m >= scene.materials.size() || outside[m] || !(maxComponent(scene.materials[m].emission) > 0.0f)) continue;
+        const Triangle& t = scene.triangles[i];
+        const double area = 0.5 * double(length(cross(t.p1 - t.p0, t.p2 - t.p0)));
+        if (!(area > 0)) continue;
+        const Vec3f emission = scene.materials[m].emission;
+        const uint32_t light = uint32_t(lights.records.size());
+        lights.emitters.push_back({i, light});
         // Flux of a two-sided Lambertian emitter: 2 pi A L.
         lights.records.push_back({LightKind::EmissiveSurface, uint32_t(lights.surfaces.size()),
-                                  float(2.0 * kPi * total * luminance(surface.emission))});
-        lights.surfaces.push_back(surface);
-        area += surface.area;
+                                  float(2.0 * kPi * area * luminance(emission))});
+        lights.surfaces.push_back({emission, uint32_t(lights.triangles.size()), 1, float(area)});
+        lights.triangles.push_back(TriangleLight{t.p0, t.p1, t.p2, 1.0f});
     }
 }
 
@@ -167,6 +148,27 @@ void addNightLights(const Scene& scene, const LightBuildOptions& options, BuiltL
     }
 }
 
+/// LightBounds of an emitting surface: its triangles' box and the cone of their normals, emitting
+/// over the hemisphere (theta_e = pi / 2) of both sides.
+LightBounds emissiveSurfaceBounds(const Scene& scene, const EmissiveSurface& surface, float power) {
+    LightBounds out;
+    for (uint32_t i = 0; i < surface.triangleCount; ++i) {
+        const TriangleLight& t = scene.triangleLights[surface.firstTriangle + i];
+        LightBounds one;
+        one.bounds.extend(t.p0);
+        one.bounds.extend(t.p1);
+        one.bounds.extend(t.p2);
+        one.axis = normalize(cross(t.p1 - t.p0, t.p2 - t.p0));
+        one.cosThetaO = 1;
+        one.cosThetaE = 0;
+        one.twoSided = true;
+        one.phi = 1;  // any non-zero power: the union only needs the geometry
+        out = unionLightBounds(out, one);
+    }
+    out.phi = power;
+    return out;
+}
+
 } // namespace
 
 void buildLights(Scene& scene, const LightBuildOptions& options) {
@@ -201,39 +203,48 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
         }
     }
     if (options.moon && sunEnabled(scene.night.moon)) addDisk(scene.night.moon, LightKind::Moon, lights.info.moonLight);
-    float area = 0;
-    if (options.surfaces) addEmissiveSurfaces(scene, lights, area);
-    else lights.lightOfMaterial.assign(scene.materials.size(), kNoLight);
+    if (options.surfaces) addEmissiveTriangles(scene, lights);
     if (scene.sun.direction.y < std::sin(options.nightBelowElevation * kPi / 180.0f) || !sunEnabled(scene.sun))
         addNightLights(scene, options, lights);
     std::vector<float> power;
     for (const LightRecord& light : lights.records) power.push_back(light.power);
     lights.powerTable = buildPiecewiseConstant1D(power);
     lights.info.powerIntegral = lights.powerTable.empty() ? 0.0f : lights.powerTable.back();
+    lights.info.colliderRadius = options.colliderRadius;
     lights.info.built = true;
     scene.lightRecords = std::move(lights.records);
     scene.lightPower = std::move(lights.powerTable);
     scene.emissiveSurfaces = std::move(lights.surfaces);
     scene.triangleLights = std::move(lights.triangles);
-    scene.lightOfMaterial = std::move(lights.lightOfMaterial);
+    scene.emitterTriangles = std::move(lights.emitters);
     scene.lampLights = std::move(lights.lampLights);
     scene.skyTable = std::move(lights.skyTable);
     scene.lights = lights.info;
+    // The light BVH over every light of finite extent; the infinite ones are sampled apart.
+    std::vector<LightBounds> bounds;
+    scene.infiniteLights.clear();
+    for (uint32_t i = 0; i < scene.lightRecords.size(); ++i) {
+        bounds.push_back(lightBoundsOf(scene, scene.lightRecords[i]));
+        const LightKind kind = scene.lightRecords[i].kind;
+        if (kind == LightKind::Sun || kind == LightKind::Sky || kind == LightKind::Moon) scene.infiniteLights.push_back(i);
+    }
+    LightBvh bvh = buildLightBvh(bounds);
+    scene.lightBvhNodes = std::move(bvh.nodes);
+    scene.lightBvhTrails = std::move(bvh.trails);
 }
 
-Bounds3f lightBounds(const Scene& scene, const LightRecord& light) {
-    Bounds3f bounds;
-    if (light.kind == LightKind::Point) return lampLightBounds(scene.lampLights[light.index], light.power).bounds;
-    if (light.kind == LightKind::Aggregate) return wallWindowsLightBounds(scene.walls[light.index], light.power).bounds;
-    if (light.kind != LightKind::EmissiveSurface) return bounds;
-    const EmissiveSurface& surface = scene.emissiveSurfaces[light.index];
-    for (uint32_t i = 0; i < surface.triangleCount; ++i) {
-        const TriangleLight& t = scene.triangleLights[surface.firstTriangle + i];
-        bounds.extend(t.p0);
-        bounds.extend(t.p1);
-        bounds.extend(t.p2);
+LightBounds lightBoundsOf(const Scene& scene, const LightRecord& light) {
+    switch (light.kind) {
+    case LightKind::EmissiveSurface: return emissiveSurfaceBounds(scene, scene.emissiveSurfaces[light.index], light.power);
+    case LightKind::Point: return lampLightBounds(scene.lampLights[light.index], light.power);
+    case LightKind::Aggregate: return wallWindowsLightBounds(scene.walls[light.index], light.power);
+    case LightKind::Sun:  // infinite: sampled apart from the tree
+    case LightKind::Sky:
+    case LightKind::Moon:
+    case LightKind::Spot:  // reserved
+        break;
     }
-    return bounds;
+    return LightBounds{};
 }
 
 } // namespace urbis

@@ -1,9 +1,11 @@
 // Builds a scene's light list and tables on the host (Scene::lights), once its geometry, materials,
-// sun and sky are set: the sun, the moon and the sky where they shine, one EmissiveSurface per emitting
-// material of the triangles, each light's power, and the sky's importance table (light arrays of
+// sun and sky are set: the sun, the moon and the sky where they shine, one EmissiveSurface per
+// emitting triangle, lamps and walls of lit windows at night, each light's power, the sky's
+// importance table and the light BVH (light arrays of
 // scene_arrays.h, and Scene::lights beside them).
 #pragma once
 
+#include "scene/light_bounds.h"
 #include "scene/scene.h"
 
 namespace urbis {
@@ -21,6 +23,8 @@ struct LightBuildOptions {
     /// found by BSDF sampling (counted in full) and lamps do not shine.
     float nightBelowElevation = 6.0f;
     bool lamps = true, windows = true;
+    /// Radius of the colliders sampler's sphere about each light, metres (lights/collider_lights.h).
+    float colliderRadius = 30.0f;
 };
 
 /// Fills the light arrays of `scene` (scene_arrays.h) and scene.lights from the rest of it. What is left out of the list is still found by
@@ -28,7 +32,8 @@ struct LightBuildOptions {
 /// uses (their emission cannot be light-sampled yet).
 void buildLights(Scene& scene, const LightBuildOptions& options = {});
 
-/// The world bounds of a light (infinite lights: empty); the light BVH's input.
-Bounds3f lightBounds(const Scene& scene, const LightRecord& light);
+/// The light BVH's input for one light of the list (scene/light_bounds.h): one function per kind
+/// behind a switch. Infinite lights (sun, sky) and kinds without bounds have phi 0 (not in the tree).
+LightBounds lightBoundsOf(const Scene& scene, const LightRecord& light);
 
 } // namespace urbis

@@ -16,7 +16,8 @@ enum class IntegratorKind : uint32_t {
 enum class LightSamplerKind : uint32_t {
     Uniform,  ///< every light of the list alike
     Power,    ///< in proportion to each light's power (LightRecord::power)
-    // Bvh (Conty Estevez and Kulla 2018, for thousands of lamps and lit windows) joins here.
+    Bvh,      ///< by the light BVH at the shading point (Conty Estevez and Kulla 2018; lights/light_bvh.h)
+    Colliders,  ///< the thesis's colliders: uniformly among the lights near the point (lights/collider_lights.h)
 };
 
 } // namespace urbis

@@ -1,14 +1,17 @@
-// What the light BVH (Conty Estevez and Kulla 2018, "Importance Sampling of Many Lights with Adaptive
-// Tree Splitting"; pbrt-v4's LightBounds) knows of one light: where it is, how much it emits and
-// into which directions. Each light kind gives its own (lights/lamp_light.h, lights/window_light.h).
+// What the light BVH knows of one light (host): where it is, which way it emits and how much. Conty
+// Estevez and Kulla 2018, "Importance Sampling of Many Lights with Adaptive Tree Splitting", section
+// 4.1; pbrt-v4 LightBounds. Each light kind has one function that gives its LightBounds
+// (lightBoundsOf in lights/light_build.cpp); the light BVH (lights/light_bvh_build.h) is built from them.
 #pragma once
 
 #include "math/bounds.h"
-#include "math/vec.h"
 
 namespace urbis {
 
-/// A light's bounds for the light BVH, as pbrt-v4's LightBounds.
+/// A light's bounds: `bounds` (world, metres) holds every point that emits; every normal of an
+/// emitting point lies within angle theta_o of `axis` (unit), and it emits only within theta_e of
+/// its normal; `phi` is its power (LightRecord::power); `twoSided` also emits along -normal.
+/// phi = 0: the light is not in the BVH (infinite lights, kinds without bounds).
 struct LightBounds { Bounds3f bounds; Vec3f axis; float cosThetaO = 1; float cosThetaE = 0; float phi = 0; bool twoSided = false; };
 
 } // namespace urbis

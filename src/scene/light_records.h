@@ -5,6 +5,7 @@
 #include "math/piecewise_constant.h"
 #include "math/vec.h"
 #include "scene/lamp_record.h"
+#include "scene/light_bvh_node.h"
 
 #include <cstdint>
 
@@ -28,8 +29,9 @@ struct LightRecord {
     float power = 0;     ///< luminous flux in the renderer's units (lights/light_build.cpp says how)
 };
 
-/// An emitting surface: every triangle of one material whose emission is not zero, sampled uniformly
-/// by area. It emits `emission` from both sides, as materials do.
+/// An emitting surface: triangles of one emitting material, sampled uniformly by area. It emits
+/// `emission` from both sides, as materials do. buildLights makes one per emitting triangle, so that
+/// the light BVH can tell near emitters from far ones (docs/lights.md § Emitting triangles).
 struct EmissiveSurface {
     Vec3f emission;
     uint32_t firstTriangle = 0, triangleCount = 0;  ///< range of LightsView::triangles
@@ -58,6 +60,12 @@ struct LampEmitter {
 
 constexpr uint32_t kNoLight = 0xffffffffu;
 
+/// A light-sampled emitting triangle: its index in SceneView::triangles and its light. Sorted by
+/// triangle, so that the light a BSDF sample found is a binary search (lights/light_sampler.h).
+struct EmitterTriangle {
+    uint32_t triangle = 0, light = 0;
+};
+
 /// What per-ray code sees of the scene's lights. Not built (buildLights was not called), it stands
 /// for the list {sun}: the sun is light-sampled, the sky and emitters are found by BSDF sampling
 /// and counted in full (the path tracer's estimator before MIS).
@@ -68,11 +76,17 @@ struct LightsView {
     PiecewiseConstant1DView power;                ///< over records: the power-weighted choice
     const EmissiveSurface* surfaces = nullptr;
     const TriangleLight* triangles = nullptr;
-    const uint32_t* lightOfMaterial = nullptr;    ///< per material: its EmissiveSurface's light, or kNoLight
     const LampEmitter* lampLights = nullptr;        ///< per lamp record (SceneView::lamps), when lamps are lights
     /// Lamp i is light firstLampLight + i and wall record i light firstWallLight + i (kNoLight: none are).
     uint32_t firstLampLight = kNoLight, firstWallLight = kNoLight;
-    uint32_t materialCount = 0;
+    const EmitterTriangle* emitterTriangles = nullptr;  ///< sorted by triangle
+    uint32_t emitterCount = 0;
+    const LightBvhNode* bvhNodes = nullptr;       ///< the light BVH over the lights of finite extent (lights/light_bvh.h)
+    uint32_t bvhNodeCount = 0;
+    const uint64_t* bvhTrails = nullptr;          ///< per light: its path from the root (bit d: second child at depth d), or kNoLightTrail
+    const uint32_t* infiniteLights = nullptr;     ///< the lights the BVH leaves out that are sampled apart (sun, sky)
+    uint32_t infiniteCount = 0;
+    float colliderRadius = 0;                     ///< metres: the colliders sampler's sphere about each light (lights/collider_lights.h)
     PiecewiseConstant2DView skyTable;             ///< over (u, v) of the sky's equal-area map (lights/sky_light.h)
     uint32_t sunLight = 0, skyLight = kNoLight;   ///< their places in records, or kNoLight
     uint32_t moonLight = kNoLight;

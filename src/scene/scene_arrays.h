@@ -25,8 +25,11 @@
     X(float, lightPower, "light_power")                \
     X(EmissiveSurface, emissiveSurfaces, "emissive_surfaces") \
     X(TriangleLight, triangleLights, "triangle_lights") \
-    X(uint32_t, lightOfMaterial, "light_of_material")  \
     X(LampEmitter, lampLights, "lamp_lights")            \
+    X(EmitterTriangle, emitterTriangles, "emitter_triangles") \
+    X(LightBvhNode, lightBvhNodes, "light_bvh")        \
+    X(uint64_t, lightBvhTrails, "light_bvh_trails")    \
+    X(uint32_t, infiniteLights, "infinite_lights")     \
     X(float, skyTable, "sky_table")
 
 namespace urbis {

@@ -10,6 +10,7 @@ struct LightListInfo {
     uint32_t skyNu = 0, skyNv = 0;          ///< the sky table's grid (lightsView's skyTable)
     uint32_t sunLight = kNoLight, skyLight = kNoLight, moonLight = kNoLight;
     uint32_t firstLampLight = kNoLight, firstWallLight = kNoLight;   ///< LightsView's
+    float colliderRadius = 0;               ///< LightsView::colliderRadius
     float powerIntegral = 0;                ///< of the lightPower table: kept here, since device tables are not read on the host
     bool built = false;                     ///< false: the view stands for the implicit {sun, sky}
 };
@@ -25,12 +26,18 @@ LightsView makeLightsView(const auto& arrays, const LightListInfo& info) {
     v.power = piecewiseConstant1DView(arrays.lightPower.data(), arrays.lightPower.size(), info.powerIntegral);
     v.surfaces = arrays.emissiveSurfaces.data();
     v.triangles = arrays.triangleLights.data();
-    v.lightOfMaterial = arrays.lightOfMaterial.data();
-    v.materialCount = uint32_t(arrays.lightOfMaterial.size());
+    v.emitterTriangles = arrays.emitterTriangles.data();
+    v.emitterCount = uint32_t(arrays.emitterTriangles.size());
+    v.bvhNodes = arrays.lightBvhNodes.data();
+    v.bvhNodeCount = uint32_t(arrays.lightBvhNodes.size());
+    v.bvhTrails = arrays.lightBvhTrails.data();
+    v.infiniteLights = arrays.infiniteLights.data();
+    v.infiniteCount = uint32_t(arrays.infiniteLights.size());
     if (arrays.skyTable.size() != 0) v.skyTable = PiecewiseConstant2DView{arrays.skyTable.data(), info.skyNu, info.skyNv};
     v.lampLights = arrays.lampLights.data();
     v.firstLampLight = info.firstLampLight;
     v.firstWallLight = info.firstWallLight;
+    v.colliderRadius = info.colliderRadius;
     v.sunLight = info.sunLight;
     v.skyLight = info.skyLight;
     v.moonLight = info.moonLight;

@@ -1,0 +1,147 @@
+// The light BVH's traversal (host+device): a light picked at a shading point by stochastic descent,
+// each child chosen in proportion to its importance there, and the probability of that choice for
+// any given light, following the light's bit trail down the same descent. Conty Estevez and Kulla
+// 2018, "Importance Sampling of Many Lights with Adaptive Tree Splitting", section 5 (without the
+// adaptive splitting); pbrt-v4 BVHLightSampler::Sample and ::PMF. Infinite lights (sun, sky) are not
+// in the tree: they take a fixed share of the choices, as in pbrt-v4. No recursion, no allocation.
+#pragma once
+
+#include "scene/light_records.h"
+
+namespace urbis {
+
+/// Where a light is chosen for: the shading point (world, metres) and its unit normal (zero away
+/// from a surface, in a medium).
+struct LightSampleContext {
+    Vec3f p, n;
+};
+
+/// cos(a - b) from the sines and cosines of a and b, 1 where a < b (pbrt-v4 cosSubClamped).
+URBIS_HD inline float cosSubClamped(float sinA, float cosA, float sinB, float cosB) {
+    return cosA > cosB ? 1.0f : cosA * cosB + sinA * sinB;
+}
+
+/// sin(a - b) from the sines and cosines of a and b, 0 where a < b (pbrt-v4 sinSubClamped).
+URBIS_HD inline float sinSubClamped(float sinA, float cosA, float sinB, float cosB) {
+    return cosA > cosB ? 0.0f : sinA * cosB - cosA * sinB;
+}
+
+/// sqrt(max(0, x)): the sine of an angle from its cosine, safe against rounding past 1.
+URBIS_HD inline float sinFromCos(float c) { return sqrtf(fmaxf(0.0f, 1.0f - c * c)); }
+
+/// Importance of a node's lights at `ctx` (Conty Estevez and Kulla 2018, equation 3; pbrt-v4
+/// LightBounds::Importance): power over squared distance to the box's centre (clamped to the
+/// bounding sphere's squared radius), times the cosine of the smallest angle between a direction of
+/// the box's cone of emission and the direction to the point, times the cosine of the smallest angle
+/// at the point's normal (absolute: the surface may transmit). Zero where the point lies outside
+/// every emitting direction (past theta_o + theta_e).
+URBIS_HD inline float lightBvhImportance(const LightBvhNode& node, const LightSampleContext& ctx) {
+    const Vec3f pc = node.bounds.centre();
+    const Vec3f toP = ctx.p - pc;
+    const float d2 = dot(toP, toP);
+    const Vec3f diagonal = node.bounds.extent();
+    const float radius2 = 0.25f * dot(diagonal, diagonal);
+    // Inside the bounding sphere every direction is possible: the angles below are then all 1.
+    const float dist = sqrtf(d2);
+    const Vec3f wi = dist > 0.0f ? toP / dist : Vec3f{0.0f, 0.0f, 1.0f};
+    float cosW = dot(node.axis, wi);
+    if (node.twoSided()) cosW = fabsf(cosW);
+    const float sinW = sinFromCos(cosW);
+    // The cone of directions from the point that the bounding sphere subtends.
+    const float cosB = d2 > radius2 ? sqrtf(fmaxf(0.0f, 1.0f - radius2 / d2)) : -1.0f;
+    const float sinB = sinFromCos(cosB);
+    const float sinO = sinFromCos(node.cosThetaO);
+    const float cosX = cosSubClamped(sinW, cosW, sinO, node.cosThetaO);
+    const float sinX = sinSubClamped(sinW, cosW, sinO, node.cosThetaO);
+    const float cosP = cosSubClamped(sinX, cosX, sinB, cosB);
+    if (cosP <= node.cosThetaE) return 0.0f;
+    // A point inside the bounding sphere counts as at its surface (pbrt clamps to half the diagonal,
+    // a length, instead of its square).
+    float importance = node.phi * cosP / fmaxf(fmaxf(d2, radius2), 1e-12f);
+    if (ctx.n.x != 0.0f || ctx.n.y != 0.0f || ctx.n.z != 0.0f) {
+        const float cosI = fabsf(dot(wi, ctx.n));
+        importance *= cosSubClamped(sinFromCos(cosI), cosI, sinB, cosB);
+    }
+    return fmaxf(importance, 0.0f);
+}
+
+/// Share of the choices that go to the infinite lights: each infinite light counts as much as the
+/// whole tree (pbrt-v4), `finite` says whether there is anything else to choose.
+URBIS_HD inline float infiniteShare(const LightsView& lights, bool finite) {
+    if (lights.infiniteCount == 0) return 0.0f;
+    return float(lights.infiniteCount) / float(lights.infiniteCount + (finite ? 1u : 0u));
+}
+
+/// Picks one of the infinite lights uniformly with u in [0, share): its index and probability.
+URBIS_HD inline uint32_t pickInfiniteLight(const LightsView& lights, float share, float u, float& pmf) {
+    const uint32_t n = lights.infiniteCount;
+    pmf = share / float(n);
+    return lights.infiniteLights[uint32_t(fminf(u / share * float(n), float(n - 1)))];
+}
+
+/// Whether `light` is one of the infinite lights.
+URBIS_HD inline bool isInfiniteLight(const LightsView& lights, uint32_t light) {
+    for (uint32_t i = 0; i < lights.infiniteCount; ++i)
+        if (lights.infiniteLights[i] == light) return true;
+    return false;
+}
+
+/// The largest float below 1: a number remapped inside [0, 1) stays there.
+constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
+
+/// Probability of the child `second` of an interior node given both children's importances c0, c1
+/// (sum > 0). One expression for sampling and for the pmf, so that both give the same bits.
+URBIS_HD inline float childProbability(float c0, float c1, bool second) { return (second ? c1 : c0) / (c0 + c1); }
+
+/// Picks a light for `ctx` with one uniform number u in [0, 1): its index into lights.records and
+/// the probability of that pick (kNoLight and 0 where nothing there has importance).
+URBIS_HD inline uint32_t sampleLightBvh(const LightsView& lights, const LightSampleContext& ctx, float u, float& pmf) {
+    pmf = 0.0f;
+    const float share = infiniteShare(lights, lights.bvhNodeCount > 0);
+    if (u < share) return pickInfiniteLight(lights, share, u, pmf);
+    if (lights.bvhNodeCount == 0) return kNoLight;
+    u = fminf((u - share) / (1.0f - share), kOneMinusEpsilon);
+    float p = 1.0f - share;
+    for (uint32_t i = 0;;) {
+        const LightBvhNode& node = lights.bvhNodes[i];
+        if (node.leaf()) {
+            // A root that is a leaf has not had its importance checked by a parent.
+            if (i > 0 || lightBvhImportance(node, ctx) > 0.0f) {
+                pmf = p;
+                return node.index();
+            }
+            return kNoLight;
+        }
+        const float c0 = lightBvhImportance(lights.bvhNodes[i + 1], ctx);
+        const float c1 = lightBvhImportance(lights.bvhNodes[node.index()], ctx);
+        if (!(c0 + c1 > 0.0f)) return kNoLight;
+        const float p0 = childProbability(c0, c1, false);
+        const bool second = !(u < p0);
+        const float pc = childProbability(c0, c1, second);
+        u = fminf(second ? (u - p0) / pc : u / pc, kOneMinusEpsilon);
+        p *= pc;
+        i = second ? node.index() : i + 1;
+    }
+}
+
+/// Probability that sampleLightBvh(ctx) picks light `index`: its bit trail says which child it lies
+/// under at each depth, and the same importances give each step's probability.
+URBIS_HD inline float lightBvhPmf(const LightsView& lights, const LightSampleContext& ctx, uint32_t index) {
+    const float share = infiniteShare(lights, lights.bvhNodeCount > 0);
+    uint64_t trail = lights.bvhTrails[index];
+    if (trail == kNoLightTrail) return isInfiniteLight(lights, index) ? share / float(lights.infiniteCount) : 0.0f;
+    float p = 1.0f - share;
+    for (uint32_t i = 0;;) {
+        const LightBvhNode& node = lights.bvhNodes[i];
+        if (node.leaf()) return i > 0 || lightBvhImportance(node, ctx) > 0.0f ? p : 0.0f;
+        const float c0 = lightBvhImportance(lights.bvhNodes[i + 1], ctx);
+        const float c1 = lightBvhImportance(lights.bvhNodes[node.index()], ctx);
+        if (!(c0 + c1 > 0.0f)) return 0.0f;
+        const bool second = (trail & 1u) != 0;
+        p *= childProbability(c0, c1, second);
+        trail >>= 1;
+        i = second ? node.index() : i + 1;
+    }
+}
+
+} // namespace urbis

@@ -1,0 +1,50 @@
+// The light BVH and the colliders sampler on the GPU: the many-lights plane (tests/lights_test_scenes.h)
+// path traced with each on both backends. The GPU's shading math is the hardware's approximations
+// (docs/architecture.md § Precision policy), so node importances, and with them some picks, differ
+// in the last bits and send some paths elsewhere; pixels are not compared one by one. Tolerances: the
+// image means within 1 % and each of 4 x 4 block means within 5 %, the margins the CPU's own
+// samplers keep against each other at these counts (tests/integrator_many_lights_test.cpp).
+#include "gpu_test_support.h"
+
+#include "cpu/cpu_renderer.h"
+#include "lights_test_scenes.h"
+#include "scene/camera.h"
+
+#include <cmath>
+
+using namespace urbis;
+
+namespace {
+
+std::vector<double> blockMeans(const LinearImage& image, uint32_t side, uint32_t blocks) {
+    std::vector<double> means(blocks * blocks, 0.0);
+    const uint32_t b = side / blocks;
+    for (uint32_t y = 0; y < side; ++y)
+        for (uint32_t x = 0; x < side; ++x) means[(y / b) * blocks + x / b] += luminance(image.pixels[y * side + x]) / (b * b);
+    return means;
+}
+
+} // namespace
+
+TEST(GpuManyLights, BvhAndCollidersMatchTheCpu) {
+    URBIS_SKIP_WITHOUT_GPU();
+    Scene scene = test::manyEmitterScene(5000, 1000.0f);
+    buildLights(scene);
+    const std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
+    RenderSettings settings;
+    settings.width = settings.height = 64;
+    settings.spp = 256;
+    const Camera camera = makeLookAtCamera(Vec3f{0, 40, 60}, Vec3f{0, 0, 0}, 60.0f, 1.0f);
+    for (LightSamplerKind kind : {LightSamplerKind::Bvh, LightSamplerKind::Colliders}) {
+        settings.lightSampler = kind;
+        RenderCounters cpuCounters, gpuCounters;
+        const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
+        const LinearImage img = gpu->render(camera, settings, gpuCounters);
+        ASSERT_EQ(img.pixels.size(), cpu.pixels.size());
+        const std::vector<double> a = blockMeans(cpu, 64, 1), b = blockMeans(img, 64, 1);
+        ASSERT_GT(a[0], 1e-3) << "the image is black";
+        EXPECT_NEAR(b[0] / a[0], 1.0, 0.01) << "sampler " << int(kind);
+        const std::vector<double> ca = blockMeans(cpu, 64, 4), cb = blockMeans(img, 64, 4);
+        for (size_t i = 0; i < ca.size(); ++i) EXPECT_NEAR(cb[i] / ca[i], 1.0, 0.05) << "sampler " << int(kind) << ", block " << i;
+    }
+}
