@@ -17,6 +17,7 @@
 #include "base/input_error.h"
 #include "film/film_output.h"
 #include "lights/light_build.h"
+#include "media/atmosphere_build.h"
 #include "osm/osm_import.h"
 #include "scene/scene.h"
 
@@ -136,6 +137,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     p.scene = buildCityScene(mesh, *wallTileSizeOf(d.geometry.wallTiles), centre);
     p.scene.sun = sunOf(d.sun);
     p.scene.sky = skyOf(d.sky);
+    buildAtmosphere(p.scene);
     buildLights(p.scene);
     p.secondsBvh = secondsSince(t0);
     return p;  // and the mesh here: the scene holds every triangle in its own order

@@ -64,12 +64,20 @@ struct SunDescription {
     Vec3f irradiance{3.3f, 3.1f, 2.8f};
 };
 
-/// Today's analytic sky (lights/sky.h): a zenith-to-horizon gradient above a constant ground.
+/// The sky (scene/sky.h): Hillaire's atmosphere (docs/atmosphere.md), or the analytic sky, a
+/// zenith-to-horizon gradient above a constant ground.
 struct SkyDescription {
-    Vec3f zenith = Sky{}.zenith;
-    Vec3f horizon = Sky{}.horizon;
-    Vec3f ground = Sky{}.ground;
-    float exponent = Sky{}.exponent;
+    Vec3f zenith = Sky{}.zenith;                      ///< analytic
+    Vec3f horizon = Sky{}.horizon;                    ///< analytic
+    Vec3f ground = Sky{}.ground;                      ///< analytic
+    float exponent = Sky{}.exponent;                  ///< analytic
+    std::string model = "atmosphere";                 ///< one of kSkyModels
+    float aerosols = 1.0f;                            ///< scales the Mie (aerosol) coefficients of Earth's standard atmosphere
+    float ozone = 1.0f;                               ///< scales the ozone absorption
+    float mieAnisotropy = Atmosphere{}.mieG;          ///< g of the aerosols' phase function
+    Vec3f groundAlbedo = Atmosphere{}.groundAlbedo;   ///< of the planet's ground (multiple scattering)
+    float altitude = 0.0f;                            ///< metres of the world's y = 0 above sea level
+    bool aerialPerspective = true;                    ///< haze along path segments (atmosphere only)
 };
 
 /// Materials and style overrides: the city's fixed materials, and wall and roof colours by building
@@ -124,5 +132,7 @@ struct SceneDescription {
 /// The choices of IntegratorDescription::kind and ::lightSampler.
 inline constexpr const char* kIntegratorKinds[] = {"path"};
 inline constexpr const char* kLightSamplers[] = {"uniform", "power"};
+/// The choices of SkyDescription::model.
+inline constexpr const char* kSkyModels[] = {"atmosphere", "analytic"};
 
 } // namespace urbis

@@ -9,6 +9,7 @@
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "lights/mis.h"
+#include "media/aerial_perspective.h"
 #include "scene/render_settings.h"
 
 namespace urbis {
@@ -134,7 +135,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                 skyWeight = bsdfFoundWeight(bounce, LightKind::Sky, settings.lightSamples,
                                             lightSelectionPmf(lights, settings.lightSampler, lights.skyLight),
                                             lightPdf(scene, sky, dir, 0.0f, 0.0f));
-            out.radiance += throughput * skyRadiance(scene.sky, dir) * skyWeight;
+            out.radiance += throughput * skyRadiance(scene, dir) * skyWeight;
             // The camera ray (depth 0) does not show the sun's disk.
             if (depth > 0 && sunEnabled(scene.sun) && sunContains(scene.sun, dir)) {
                 float sunWeight = 1.0f;
@@ -146,6 +147,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             }
             pathEnds = true;
         } else {
+            applyAerialPerspective(scene, ray, hit.t, throughput, out.radiance);
             const Material& material = scene.materials[hit.material];
             const Vec3f dir = normalize(ray.dir);
             if (maxComponent(material.emission) > 0.0f) {

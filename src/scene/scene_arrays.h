@@ -26,7 +26,10 @@
     X(EmissiveSurface, emissiveSurfaces, "emissive_surfaces") \
     X(TriangleLight, triangleLights, "triangle_lights") \
     X(uint32_t, lightOfMaterial, "light_of_material")  \
-    X(float, skyTable, "sky_table")
+    X(float, skyTable, "sky_table")                    \
+    X(Vec3f, transmittanceLut, "transmittance_lut")    \
+    X(Vec3f, multiScatteringLut, "multiscattering_lut") \
+    X(Vec3f, skyViewLut, "sky_view_lut")
 
 namespace urbis {
 
