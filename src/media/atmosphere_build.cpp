@@ -2,6 +2,8 @@
 
 #include "media/atmosphere_lut.h"
 
+#include <tbb/parallel_for.h>
+
 namespace urbis {
 
 namespace {
@@ -16,6 +18,15 @@ Vec3f stepIntegral(Vec3f sigma, Vec3f stepTransmittance, float dt) {
     for (int c = 0; c < 3; ++c)
         out[c] = sigma[c] > 1e-9f ? (1.0f - stepTransmittance[c]) / sigma[c] : dt;
     return out;
+}
+
+/// Calls texel(i, j) for every texel of a w x h table, rows in parallel: each texel is its own,
+/// so the table is the same for any thread count.
+template <typename Texel>
+void forEachTexel(uint32_t w, uint32_t h, Texel&& texel) {
+    tbb::parallel_for(uint32_t(0), h, [&](uint32_t j) {
+        for (uint32_t i = 0; i < w; ++i) texel(i, j);
+    });
 }
 
 /// What integrateScattering returns, per unit of solar irradiance.
@@ -73,55 +84,55 @@ Vec3f planetSunDirection(float muSun) { return {sqrtf(fmaxf(0.0f, 1.0f - muSun *
 } // namespace
 
 std::vector<Vec3f> buildTransmittanceLut(const Atmosphere& a) {
-    // Uniform midpoint steps: even the longest ray (about 1100 km, grazing the ground) takes steps of
-    // about 2 km where its height grows as t^2 / 2R, so the midpoint rule stays well within 0.1 %.
-    constexpr uint32_t kSteps = 500;
+    // Uniform midpoint steps. The longest ray (about 1100 km, grazing the ground) takes steps of 11 km
+    // where its height grows as t^2 / 2R (a scale of 120 km for the aerosols' 1.2 km); a vertical one
+    // steps of 1 km against scale heights of 1.2 and 8 km: the midpoint rule's error, (step / scale)^2
+    // / 24 of the optical depth, keeps the transmittance well within 0.1 %.
+    constexpr uint32_t kSteps = 100;
     std::vector<Vec3f> lut(size_t(kTransmittanceLutWidth) * kTransmittanceLutHeight);
-    for (uint32_t j = 0; j < kTransmittanceLutHeight; ++j)
-        for (uint32_t i = 0; i < kTransmittanceLutWidth; ++i) {
-            float r, mu;
-            transmittanceLutParams(a, {float(i) / float(kTransmittanceLutWidth - 1), float(j) / float(kTransmittanceLutHeight - 1)},
-                                   r, mu);
-            const float dt = fmaxf(0.0f, distanceToSphere(r, mu, a.topRadius, false)) / float(kSteps);
-            Vec3f depth;
-            for (uint32_t k = 0; k < kSteps; ++k) {
-                const float t = (float(k) + 0.5f) * dt;
-                const float h = sqrtf(r * r + t * t + 2.0f * r * mu * t) - a.bottomRadius;
-                depth += sampleMedium(a, h).extinction * dt;
-            }
-            lut[size_t(j) * kTransmittanceLutWidth + i] = expNegative(depth);
+    forEachTexel(kTransmittanceLutWidth, kTransmittanceLutHeight, [&](uint32_t i, uint32_t j) {
+        float r, mu;
+        transmittanceLutParams(a, {float(i) / float(kTransmittanceLutWidth - 1), float(j) / float(kTransmittanceLutHeight - 1)},
+                               r, mu);
+        const float dt = fmaxf(0.0f, distanceToSphere(r, mu, a.topRadius, false)) / float(kSteps);
+        Vec3f depth;
+        for (uint32_t k = 0; k < kSteps; ++k) {
+            const float t = (float(k) + 0.5f) * dt;
+            const float h = sqrtf(r * r + t * t + 2.0f * r * mu * t) - a.bottomRadius;
+            depth += sampleMedium(a, h).extinction * dt;
         }
+        lut[size_t(j) * kTransmittanceLutWidth + i] = expNegative(depth);
+    });
     return lut;
 }
 
 std::vector<Vec3f> buildMultiScatteringLut(const Atmosphere& a, const std::vector<Vec3f>& transmittance) {
-    constexpr uint32_t kRings = 8, kSteps = 40;  // 8 x 8 directions, equal solid angles
+    constexpr uint32_t kRings = 8, kSteps = 20;  // 8 x 8 directions, equal solid angles; the paper's 20 steps
     constexpr uint32_t n = kMultiScatteringLutSize;
     std::vector<Vec3f> lut(size_t(n) * n);
-    for (uint32_t j = 0; j < n; ++j)
-        for (uint32_t i = 0; i < n; ++i) {
-            const float r = a.bottomRadius + (a.topRadius - a.bottomRadius) * float(j) / float(n - 1);
-            const Vec3f sunDir = planetSunDirection(2.0f * float(i) / float(n - 1) - 1.0f);
-            // L_2nd and f_ms are integrals over the sphere with the isotropic phase: means over the directions.
-            Vec3f secondOrder, transfer;
-            for (uint32_t u = 0; u < kRings; ++u)
-                for (uint32_t v = 0; v < kRings; ++v) {
-                    const float cosTheta = 1.0f - 2.0f * (float(u) + 0.5f) / float(kRings);
-                    const float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
-                    const float phi = 2.0f * kPi * (float(v) + 0.5f) / float(kRings);
-                    const Vec3f dir{sinTheta * cosf(phi), cosTheta, sinTheta * sinf(phi)};
-                    const ScatteringIntegral s =
-                        integrateScattering(a, viewOf(transmittance), {}, r, dir, sunDir, kSteps, true, true);
-                    secondOrder += s.radiance;
-                    transfer += s.transfer;
-                }
-            const float count = float(kRings * kRings), isotropic = 0.25f / kPi, sphere = 4.0f * kPi;
-            secondOrder *= isotropic * sphere / count;
-            transfer *= isotropic * sphere / count;
-            // Psi_ms = L_2nd / (1 - f_ms): every order of scattering as a geometric series (eq. 9).
-            lut[size_t(j) * n + i] = {secondOrder.x / (1.0f - transfer.x), secondOrder.y / (1.0f - transfer.y),
-                                      secondOrder.z / (1.0f - transfer.z)};
-        }
+    forEachTexel(n, n, [&](uint32_t i, uint32_t j) {
+        const float r = a.bottomRadius + (a.topRadius - a.bottomRadius) * float(j) / float(n - 1);
+        const Vec3f sunDir = planetSunDirection(2.0f * float(i) / float(n - 1) - 1.0f);
+        // L_2nd and f_ms are integrals over the sphere with the isotropic phase: means over the directions.
+        Vec3f secondOrder, transfer;
+        for (uint32_t u = 0; u < kRings; ++u)
+            for (uint32_t v = 0; v < kRings; ++v) {
+                const float cosTheta = 1.0f - 2.0f * (float(u) + 0.5f) / float(kRings);
+                const float sinTheta = sqrtf(fmaxf(0.0f, 1.0f - cosTheta * cosTheta));
+                const float phi = 2.0f * kPi * (float(v) + 0.5f) / float(kRings);
+                const Vec3f dir{sinTheta * cosf(phi), cosTheta, sinTheta * sinf(phi)};
+                const ScatteringIntegral s =
+                    integrateScattering(a, viewOf(transmittance), {}, r, dir, sunDir, kSteps, true, true);
+                secondOrder += s.radiance;
+                transfer += s.transfer;
+            }
+        const float count = float(kRings * kRings), isotropic = 0.25f / kPi, sphere = 4.0f * kPi;
+        secondOrder *= isotropic * sphere / count;
+        transfer *= isotropic * sphere / count;
+        // Psi_ms = L_2nd / (1 - f_ms): every order of scattering as a geometric series (eq. 9).
+        lut[size_t(j) * n + i] = {secondOrder.x / (1.0f - transfer.x), secondOrder.y / (1.0f - transfer.y),
+                                  secondOrder.z / (1.0f - transfer.z)};
+    });
     return lut;
 }
 
@@ -131,18 +142,17 @@ std::vector<Vec3f> buildSkyViewLut(const Atmosphere& a, const std::vector<Vec3f>
     std::vector<Vec3f> lut(size_t(kSkyViewLutWidth) * kSkyViewLutHeight);
     const float r = skyViewRadius(a);
     const Vec3f sunDir = planetSunDirection(a.sunDirection.y);
-    for (uint32_t j = 0; j < kSkyViewLutHeight; ++j)
-        for (uint32_t i = 0; i < kSkyViewLutWidth; ++i) {
-            float cosZenith, cosAzimuth;
-            skyViewLutParams(a, {float(i) / float(kSkyViewLutWidth - 1), float(j) / float(kSkyViewLutHeight - 1)},
-                             cosZenith, cosAzimuth);
-            const float sinZenith = sqrtf(fmaxf(0.0f, 1.0f - cosZenith * cosZenith));
-            const float sinAzimuth = sqrtf(fmaxf(0.0f, 1.0f - cosAzimuth * cosAzimuth));
-            const Vec3f dir{sinZenith * cosAzimuth, cosZenith, sinZenith * sinAzimuth};
-            const ScatteringIntegral s = integrateScattering(a, viewOf(transmittance), viewOf(multiScattering), r, dir,
-                                                             sunDir, kSteps, false, true);
-            lut[size_t(j) * kSkyViewLutWidth + i] = s.radiance * a.solarIrradiance;
-        }
+    forEachTexel(kSkyViewLutWidth, kSkyViewLutHeight, [&](uint32_t i, uint32_t j) {
+        float cosZenith, cosAzimuth;
+        skyViewLutParams(a, {float(i) / float(kSkyViewLutWidth - 1), float(j) / float(kSkyViewLutHeight - 1)},
+                         cosZenith, cosAzimuth);
+        const float sinZenith = sqrtf(fmaxf(0.0f, 1.0f - cosZenith * cosZenith));
+        const float sinAzimuth = sqrtf(fmaxf(0.0f, 1.0f - cosAzimuth * cosAzimuth));
+        const Vec3f dir{sinZenith * cosAzimuth, cosZenith, sinZenith * sinAzimuth};
+        const ScatteringIntegral s = integrateScattering(a, viewOf(transmittance), viewOf(multiScattering), r, dir,
+                                                         sunDir, kSteps, false, true);
+        lut[size_t(j) * kSkyViewLutWidth + i] = s.radiance * a.solarIrradiance;
+    });
     return lut;
 }
 
