@@ -51,7 +51,10 @@ URBIS_HD inline SegmentMedium atmosphereSegment(const Atmosphere& a, ArrayView<V
     const Vec3f single = (rayleighColumn * rayleighPhase(cosTheta) + Vec3f{1, 1, 1} * (mieColumn * miePhase(a.mieG, cosTheta))) *
                          sunTransmittance;
     const Vec3f multiple = (rayleighColumn + Vec3f{mieColumn, mieColumn, mieColumn}) * psi;
-    const Vec3f spread{expIntegralRatio(opticalDepth.x), expIntegralRatio(opticalDepth.y), expIntegralRatio(opticalDepth.z)};
+    // (1 - T) / tau from the transmittance already at hand (its limit 1 where tau is tiny).
+    Vec3f spread;
+    for (int c = 0; c < 3; ++c)
+        spread[c] = opticalDepth[c] > 1e-4f ? (1.0f - m.transmittance[c]) / opticalDepth[c] : 1.0f - 0.5f * opticalDepth[c];
     m.inScattered = (single + multiple) * spread * a.solarIrradiance;
     return m;
 }
