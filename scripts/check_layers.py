@@ -35,6 +35,7 @@ LAYERS = {
                         # surface parts, camera, render settings, light records), SceneView and the host
                         # Scene with its build; never intersectors or light sampling
     "geometry": 6,      # one intersector per primitive kind, the leaf dispatch over the kinds, traceScene
+    "media": 6,         # participating media: the atmosphere's tables and look-ups, aerial perspective
     "lights": 7,        # light sampling over the light records: light interface, light sampler, MIS
     "integrators": 8,   # the integrator interface, the path tracer, the AOV pass
     "model": 9,         # the city model: buildings, parts, polygons and their GEOS wrapper, the reasons buildings were dropped

@@ -4,6 +4,8 @@
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
 #include "cpu/cpu_renderer.h"
+#include "lights/light_build.h"
+#include "media/atmosphere_build.h"
 #include "osm/osm_import.h"
 #include "scene/camera_framing.h"
 
@@ -23,8 +25,9 @@ namespace {
 
 /// Renders the Bavarian village in `geometry` ("procedural": walls in the BVH, the GPU's mixed-layout
 /// render kernel; "plain": stored triangles only, its triangle-layout kernel) on both backends and
-/// checks the tolerances above.
-void expectVillageImagesMatch(const std::string& geometry) {
+/// checks the tolerances above. With `atmosphere`, under Hillaire's atmosphere (its tables, aerial
+/// perspective on every segment) with the light list built (the sky's table from its radiance).
+void expectVillageImagesMatch(const std::string& geometry, bool atmosphere = false) {
     CityModel city = importOsm(test::villageFile(), ImportOptions{});
     CityMeshOptions options;
     options.geometry = parseGeometryModes(geometry);
@@ -32,6 +35,11 @@ void expectVillageImagesMatch(const std::string& geometry) {
     Scene scene = buildCityScene(mesh);
     ASSERT_EQ(!scene.walls.empty(), geometry == "procedural");
     scene.sun = makeSun(35.0f, 140.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
+    if (atmosphere) {
+        scene.sky.model = SkyModel::Atmosphere;
+        buildAtmosphere(scene);
+        buildLights(scene);
+    }
     RenderSettings settings;
     settings.width = 192;
     settings.height = 128;
@@ -58,9 +66,9 @@ void expectVillageImagesMatch(const std::string& geometry) {
                      cpu.pixels[i].z == img.pixels[i].z;
     }
     const double n = double(cpu.pixels.size()), mean = sum / n;
-    std::printf("image parity (%s): mean luminance %.5f, mean |diff| %.3g (%.4f%%), worst %.4g, %zu of %zu pixels "
+    std::printf("image parity (%s%s): mean luminance %.5f, mean |diff| %.3g (%.4f%%), worst %.4g, %zu of %zu pixels "
                 "off by > 0.1%%, %zu bit-identical; rays cpu %llu gpu %llu\n",
-                geometry.c_str(), mean, sumDiff / n, 100.0 * sumDiff / n / mean, worst, off, cpu.pixels.size(),
+                geometry.c_str(), atmosphere ? ", atmosphere" : "", mean, sumDiff / n, 100.0 * sumDiff / n / mean, worst, off, cpu.pixels.size(),
                 identical, (unsigned long long)cpuCounters.rays, (unsigned long long)gpuCounters.rays);
     ASSERT_GT(mean, 0.01) << "the image is black";
     EXPECT_LT(sumDiff / n, 1e-3 * mean);
@@ -80,4 +88,9 @@ TEST(GpuRender, VillageWithProceduralFacadesMatchesTheCpuAt64Spp) {
 TEST(GpuRender, VillageOfStoredTrianglesMatchesTheCpuAt64Spp) {
     URBIS_SKIP_WITHOUT_GPU();
     expectVillageImagesMatch("plain");
+}
+
+TEST(GpuRender, VillageUnderTheAtmosphereMatchesTheCpuAt64Spp) {
+    URBIS_SKIP_WITHOUT_GPU();
+    expectVillageImagesMatch("procedural", true);
 }

@@ -18,6 +18,7 @@
 #include "base/input_error.h"
 #include "film/film_output.h"
 #include "lights/light_build.h"
+#include "media/atmosphere_build.h"
 #include "osm/osm_import.h"
 #include "scene/scene.h"
 
@@ -143,6 +144,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     p.scene.sun = celestial.sun;
     p.scene.night = celestial.night;
     p.scene.sky = skyOf(d.sky);
+    buildAtmosphere(p.scene);
     buildLights(p.scene);
     p.secondsBvh = secondsSince(t0);
     return p;  // and the mesh here: the scene holds every triangle in its own order

@@ -128,6 +128,14 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
                          d.sun.azimuth = float(s[1]);
                          d.astronomy.sunFromTime = false;
                      }));
+    if (wanted("--no-aerial-perspective")) {
+        CLI::Option* flag = cmd.add_flag("--no-aerial-perspective", noAerialPerspective_,
+                                         "No haze along path segments (the atmosphere still gives the sky and the sun)");
+        overrides_.emplace_back(flag, [](SceneDescription& d) { d.sky.aerialPerspective = false; });
+    }
+    if (CLI::Option* sky = bind(cmd, "--sky", v.sky.model, "Sky model: atmosphere (Hillaire 2020) or analytic (a gradient)",
+                                [](SceneDescription& d, const std::string& s) { d.sky.model = s; }))
+        sky->check(CLI::IsMember(std::vector<std::string>(std::begin(kSkyModels), std::end(kSkyModels))))->capture_default_str();
     range(bind(cmd, "--sun-radius", v.sun.angularRadius, "Angular radius of the sun, degrees",
                [](SceneDescription& d, float r) { d.sun.angularRadius = r; }),
           0.01, 20.0);

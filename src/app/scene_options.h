@@ -49,6 +49,7 @@ private:
     } text_;
     std::string sceneFile_, saveScene_;
     bool noStreets_ = false;   ///< --no-streets
+    bool noAerialPerspective_ = false;  ///< --no-aerial-perspective
     std::vector<std::string_view> only_;
     std::vector<std::pair<const CLI::Option*, std::function<void(SceneDescription&)>>> overrides_;
 };

@@ -80,12 +80,20 @@ struct AstronomyDescription {
 /// its facades come from was written.
 inline constexpr std::array<double, 2> kDefaultLocation{14.4213, 50.0875};
 
-/// Today's analytic sky (lights/sky.h): a zenith-to-horizon gradient above a constant ground.
+/// The sky (scene/sky.h): Hillaire's atmosphere (docs/atmosphere.md), or the analytic sky, a
+/// zenith-to-horizon gradient above a constant ground.
 struct SkyDescription {
-    Vec3f zenith = Sky{}.zenith;
-    Vec3f horizon = Sky{}.horizon;
-    Vec3f ground = Sky{}.ground;
-    float exponent = Sky{}.exponent;
+    Vec3f zenith = Sky{}.zenith;                      ///< analytic
+    Vec3f horizon = Sky{}.horizon;                    ///< analytic
+    Vec3f ground = Sky{}.ground;                      ///< analytic
+    float exponent = Sky{}.exponent;                  ///< analytic
+    std::string model = "atmosphere";                 ///< one of kSkyModels
+    float aerosols = 1.0f;                            ///< scales the Mie (aerosol) coefficients of Earth's standard atmosphere
+    float ozone = 1.0f;                               ///< scales the ozone absorption
+    float mieAnisotropy = Atmosphere{}.mieG;          ///< g of the aerosols' phase function
+    Vec3f groundAlbedo = Atmosphere{}.groundAlbedo;   ///< of the planet's ground (multiple scattering)
+    float altitude = 0.0f;                            ///< metres of the world's y = 0 above sea level
+    bool aerialPerspective = true;                    ///< haze along path segments (atmosphere only)
 };
 
 /// The night's lights. `hour` (local clock hours, 0 to 24) sets which rooms are lit
@@ -151,5 +159,7 @@ struct SceneDescription {
 inline constexpr const char* kIntegratorKinds[] = {"path"};
 inline constexpr const char* kLightSamplers[] = {"uniform", "power", "bvh", "colliders"};  // in LightSamplerKind order
 inline constexpr const char* kTrafficSides[] = {"auto", "right", "left"};
+/// The choices of SkyDescription::model.
+inline constexpr const char* kSkyModels[] = {"atmosphere", "analytic"};
 
 } // namespace urbis

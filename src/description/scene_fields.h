@@ -65,6 +65,13 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.vec3("horizon", d.sky.horizon, 0.0f, 1e6f);
         v.vec3("ground", d.sky.ground, 0.0f, 1e6f);
         v.number("exponent", d.sky.exponent, 0.01f, 100.0f);
+        v.choice("model", d.sky.model, std::span(kSkyModels));
+        v.number("aerosols", d.sky.aerosols, 0.0f, 100.0f);
+        v.number("ozone", d.sky.ozone, 0.0f, 10.0f);
+        v.number("mie_anisotropy", d.sky.mieAnisotropy, 0.0f, 0.99f);
+        v.vec3("ground_albedo", d.sky.groundAlbedo, 0.0f, 1.0f);
+        v.number("altitude", d.sky.altitude, -500.0f, 9000.0f);
+        v.boolean("aerial_perspective", d.sky.aerialPerspective);
     });
     v.object("lights", [&] { v.number("hour", d.lights.hour, -1.0f, 24.0f); });
     v.object("materials", [&] {

@@ -52,7 +52,23 @@ float hourOf(const SceneDescription& d) {
     return azimuth >= 180.0f ? 21.0f : 5.0f;
 }
 
-Sky skyOf(const SkyDescription& sky) { return Sky{sky.zenith, sky.horizon, sky.ground, sky.exponent}; }
+Sky skyOf(const SkyDescription& d) {
+    Sky sky;
+    sky.zenith = d.zenith;
+    sky.horizon = d.horizon;
+    sky.ground = d.ground;
+    sky.exponent = d.exponent;
+    sky.model = d.model == "analytic" ? SkyModel::Analytic : SkyModel::Atmosphere;
+    Atmosphere& a = sky.atmosphere;
+    a.mieScattering *= d.aerosols;
+    a.mieAbsorption *= d.aerosols;
+    a.ozoneAbsorption *= d.ozone;
+    a.mieG = d.mieAnisotropy;
+    a.groundAlbedo = d.groundAlbedo;
+    a.altitude = d.altitude * 1e-3f;
+    sky.aerialPerspective = d.aerialPerspective;
+    return sky;
+}
 
 RenderSettings renderSettingsOf(const IntegratorDescription& integrator, const FilmDescription& film) {
     RenderSettings settings;

@@ -10,6 +10,7 @@
 #include "lights/light_sampler.h"
 #include "lights/mis.h"
 #include "lights/star_field.h"
+#include "media/aerial_perspective.h"
 #include "scene/render_settings.h"
 
 namespace urbis {
@@ -188,7 +189,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                 skyWeight = bsdfFoundWeight(bounce, LightKind::Sky, settings.lightSamples,
                                             lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.skyLight),
                                             lightPdf(scene, sky, dir, 0.0f, 0.0f));
-            out.radiance += throughput * skyRadiance(scene.sky, dir) * skyWeight;
+            out.radiance += throughput * skyRadiance(scene, dir) * skyWeight;
             // The camera ray (depth 0) does not show the sun's disk.
             if (depth > 0 && sunEnabled(scene.sun) && sunContains(scene.sun, dir)) {
                 float sunWeight = 1.0f;
@@ -206,6 +207,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             out.radiance += throughput * nightSkyRadiance(scene.night.stars, dir);
             pathEnds = true;
         } else {
+            applyAerialPerspective(scene, ray, hit.t, throughput, out.radiance);
             const Material& material = scene.materials[hit.material];
             const Vec3f dir = normalize(ray.dir);
             out.radiance += throughput * foundEmission(scene, settings, hit, material, ray, dir, bounce);

@@ -41,7 +41,7 @@ URBIS_HD inline bool sampleLight(const SceneView& scene, const LightRecord& ligh
     }
     case LightKind::Sky:
         s.dir = sampleSkyDirection(scene.lights.skyTable, u1, u2, s.pdf);
-        s.radiance = skyRadiance(scene.sky, s.dir);
+        s.radiance = skyRadiance(scene, s.dir);
         return s.pdf > 0.0f;
     case LightKind::EmissiveSurface: {
         const EmissiveSurface& surface = scene.lights.surfaces[light.index];

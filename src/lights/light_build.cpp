@@ -58,7 +58,7 @@ std::vector<bool> materialsOutsideTriangles(const Scene& scene) {
 /// mean luminance (MIS compensation, Karlik et al. 2019; pbrt-v4 ImageInfiniteLight): BSDF sampling
 /// already finds the even part well, so light samples go where the sky is brighter than that.
 /// Directions of pdf 0 are BSDF sampling's alone, with weight 1: every estimate stays unbiased.
-std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, bool upperOnly, bool compensate,
+std::vector<float> skyLuminanceTable(const SceneView& scene, uint32_t nu, uint32_t nv, bool upperOnly, bool compensate,
                                      double& integral) {
     std::vector<float> func(size_t(nu) * nv, 0.0f);
     const double cell = 4.0 * kPi / (double(nu) * nv);
@@ -67,7 +67,7 @@ std::vector<float> skyLuminanceTable(const Sky& sky, uint32_t nu, uint32_t nv, b
     for (uint32_t v = 0; v < rows; ++v)
         for (uint32_t u = 0; u < nu; ++u) {
             const Vec2f uv{(float(u) + 0.5f) / float(nu), (float(v) + 0.5f) / float(nv)};
-            const float lum = luminance(skyRadiance(sky, skyDirectionFromUv(uv)));
+            const float lum = luminance(skyRadiance(scene, skyDirectionFromUv(uv)));
             func[size_t(v) * nu + u] = lum;
             sum += lum;
         }
@@ -188,7 +188,7 @@ void buildLights(Scene& scene, const LightBuildOptions& options) {
     if (options.sky && options.skyWidth > 0 && options.skyHeight > 0) {
         double integral = 0;
         std::vector<float> func =
-            skyLuminanceTable(scene.sky, options.skyWidth, options.skyHeight, !scene.grounds.empty(), options.compensateSky, integral);
+            skyLuminanceTable(scene.view(), options.skyWidth, options.skyHeight, !scene.grounds.empty(), options.compensateSky, integral);
         // Under a bright sun a sky sample takes the place of a sun sample, whose shadows make most of
         // the noise, and its shadow ray is incoherent: the sky is then BSDF sampling's alone (counted
         // in full, unbiased), as it is where the table is empty (docs/lights.md § The light set).

@@ -1,4 +1,4 @@
-// The sky as an environment light (host+device): its radiance, and directions importance-sampled
+// The sky as an environment light (host+device): its radiance (analytic or the atmosphere's), and directions importance-sampled
 // from a piecewise-constant table of that radiance over an equal-area map of the sphere (pbrt-v3
 // InfiniteAreaLight's method; the table is built once per scene by buildLights). Map (Lambert's
 // cylindrical equal-area projection): u = phi / 2 pi with phi the azimuth from +x towards +z,
@@ -9,15 +9,25 @@
 
 #include "math/piecewise_constant.h"
 #include "math/sampling.h"
-#include "scene/sky.h"
+#include "media/atmosphere_lut.h"
+#include "scene/scene_view.h"
 
 namespace urbis {
 
-/// Radiance seen along a unit world direction (y up). The sun's disk is not part of it.
-URBIS_HD inline Vec3f skyRadiance(const Sky& sky, Vec3f dir) {
+/// Radiance of the analytic sky along a unit world direction (y up).
+URBIS_HD inline Vec3f analyticSkyRadiance(const Sky& sky, Vec3f dir) {
     if (dir.y < 0.0f) return sky.ground;
     float w = powf(dir.y, sky.exponent);
     return sky.zenith * w + sky.horizon * (1.0f - w);
+}
+
+/// Radiance of the scene's sky along a unit world direction (y up): the analytic sky, or the
+/// atmosphere's sky view table (Hillaire 2020 § 5.3), which holds the in-scattered light of the whole
+/// ray from the world's origin, so that a miss adds no aerial perspective of its own. The sun's disk
+/// is not part of it.
+URBIS_HD inline Vec3f skyRadiance(const SceneView& scene, Vec3f dir) {
+    if (scene.sky.model == SkyModel::Analytic) return analyticSkyRadiance(scene.sky, dir);
+    return lutBilinear(scene.skyViewLut, kSkyViewLutWidth, kSkyViewLutHeight, skyViewLutCoord(scene.sky.atmosphere, dir));
 }
 
 /// The unit direction at (u, v) of the map.

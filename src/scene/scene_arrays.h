@@ -30,7 +30,10 @@
     X(LightBvhNode, lightBvhNodes, "light_bvh")        \
     X(uint64_t, lightBvhTrails, "light_bvh_trails")    \
     X(uint32_t, infiniteLights, "infinite_lights")     \
-    X(float, skyTable, "sky_table")
+    X(float, skyTable, "sky_table")                    \
+    X(Vec3f, transmittanceLut, "transmittance_lut")    \
+    X(Vec3f, multiScatteringLut, "multiscattering_lut") \
+    X(Vec3f, skyViewLut, "sky_view_lut")
 
 namespace urbis {
 
