@@ -14,6 +14,7 @@
 #include "film/tone_map.h"
 #include "layout/city_layout.h"
 #include "lights/light_build.h"
+#include "media/atmosphere_build.h"
 #include "scene/camera.h"
 
 #include <gtest/gtest.h>
@@ -39,6 +40,7 @@ Scene defaultWorld(float elevation, float azimuth, Camera& camera) {
     Scene scene = buildCityScene(mesh);
     scene.sun = sunOf(d.sun);
     scene.sky = skyOf(d.sky);
+    buildAtmosphere(scene);
     buildLights(scene);
     return scene;
 }

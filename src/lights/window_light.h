@@ -7,6 +7,7 @@
 #pragma once
 
 #include "geometry/wall_parts.h"
+#include "math/constants.h"
 #include "scene/light_bounds.h"
 #include "scene/material.h"
 #include "scene/scene_view.h"
