@@ -20,3 +20,10 @@ mkdir -p "$OUT"
 "$URBIS" render --camera 8,1.7,45,-4,0.5,-20 --fov 70 --width 960 --height 540 --spp 64 --out "$OUT/generated_street.png"
 "$URBIS" render --buildings 3000 --camera -60,110,430,0,0,230 --fov 55 --width 960 --height 540 --spp 128 \
     --out "$OUT/generated_river.png"
+SF_STREET=(--osm "$DATA/sf_downtown_2023.osm.pbf" --camera-geo -122.3940,37.7950,25,200,-25 --fov 60 --width 960 --height 540)
+"$URBIS" render "${SF_STREET[@]}" --time 2023-06-21T13:00-07:00 --spp 256 --out "$OUT/sf_noon.png"
+"$URBIS" render "${SF_STREET[@]}" --time 2023-06-21T20:25-07:00 --exposure 4 --spp 512 --out "$OUT/sf_sunset.png"
+"$URBIS" render "${SF_STREET[@]}" --time 2023-06-21T23:00-07:00 --exposure 11 --light-sampler bvh --spp 4096 --denoise \
+    --out "$OUT/sf_night.png"
+"$URBIS" render --time 2024-10-15T21:00+02:00 --exposure 10 --light-sampler bvh --width 960 --height 540 --spp 2048 --denoise \
+    --out "$OUT/generated_night.png"
