@@ -16,10 +16,10 @@ as urbis writes them) are read here.
 import argparse
 import json
 import os
-import struct
 import subprocess
 import sys
-import zlib
+
+from exr_error import read_exr
 
 # name | urbis options. Night today: a sun below the horizon (a dark sky and the lit windows). The
 # street view looks down the generated city's central avenue; the overview is the default framing,
@@ -34,60 +34,8 @@ VIEWS = [
 
 
 def read_exr_rgb(path):
-    """The R, G, B float channels of a scan-line EXR as three lists, and (width, height)."""
-    data = open(path, "rb").read()
-    if struct.unpack_from("<I", data, 0)[0] != 20000630:
-        sys.exit(f"{path}: not an OpenEXR file")
-    pos, channels, compression, window = 8, [], None, None
-    while data[pos] != 0:
-        end = data.index(b"\0", pos)
-        name = data[pos:end].decode()
-        pos = end + 1
-        end = data.index(b"\0", pos)
-        pos = end + 1
-        size = struct.unpack_from("<i", data, pos)[0]
-        pos += 4
-        value = data[pos:pos + size]
-        pos += size
-        if name == "channels":
-            p = 0
-            while value[p] != 0:
-                e = value.index(b"\0", p)
-                channels.append((value[p:e].decode(), struct.unpack_from("<i", value, e + 1)[0]))
-                p = e + 1 + 16
-        elif name == "compression":
-            compression = value[0]
-        elif name == "dataWindow":
-            window = struct.unpack("<4i", value)
-    pos += 1
-    width, height = window[2] - window[0] + 1, window[3] - window[1] + 1
-    lines = {0: 1, 2: 1, 3: 16}.get(compression)
-    if lines is None:
-        sys.exit(f"{path}: compression {compression} is not read here")
-    bytes_of = {0: 4, 1: 2, 2: 4}
-    row_bytes = sum(bytes_of[t] * width for _, t in channels)
-    blocks = (height + lines - 1) // lines
-    offsets = struct.unpack_from(f"<{blocks}Q", data, pos)
-    out = {name: [] for name in ("R", "G", "B")}
-    for offset in offsets:
-        y, size = struct.unpack_from("<ii", data, offset)
-        chunk = data[offset + 8:offset + 8 + size]
-        rows = min(lines, window[3] + 1 - y)
-        if compression and size < row_bytes * rows:
-            raw = bytearray(zlib.decompress(chunk))
-            for i in range(1, len(raw)):  # undo the predictor, then the interleaving
-                raw[i] = (raw[i - 1] + raw[i] - 128) & 0xFF
-            half = (len(raw) + 1) // 2
-            chunk = bytes(b for pair in zip(raw[:half], raw[half:]) for b in pair) + (raw[half - 1:half] if len(raw) % 2 else b"")
-        p = 0
-        for _ in range(rows):
-            for name, kind in channels:
-                n = bytes_of[kind] * width
-                if name in out:
-                    if kind != 2:
-                        sys.exit(f"{path}: channel {name} is not float (render with --exr-float)")
-                    out[name].extend(struct.unpack_from(f"<{width}f", chunk, p))
-                p += n
+    """The R, G, B channels of an EXR as three lists, and (width, height)."""
+    width, height, out = read_exr(path)
     return out, (width, height)
 
 
