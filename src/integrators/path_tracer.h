@@ -98,8 +98,10 @@ URBIS_HD inline Vec3f foundEmission(const SceneView& scene, const RenderSettings
                                     const Material& material, const Ray& ray, Vec3f dir, const BounceInfo& bounce) {
     const LightsView& lights = scene.lights;
     if (hit.kind == kPrimKindOf<LampRecord> && hit.part == SurfacePart::LampGlass && lights.firstLampLight != kNoLight) {
-        const float weight = bsdfFoundWeight(bounce, LightKind::Point, settings.lightSamples,
-                                             lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.firstLampLight + hit.index), 0.0f);
+        float weight = 1.0f;
+        if (!bounce.countsInFull)
+            weight = bsdfFoundWeight(bounce, LightKind::Point, settings.lightSamples,
+                                     lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.firstLampLight + hit.index), 0.0f);
         return lampGlassRadiance(lights.lampLights[hit.index], -dir) * weight;
     }
     if (!(maxComponent(material.emission) > 0.0f)) return {};
@@ -200,10 +202,13 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                 out.radiance += throughput * scene.sun.radiance * sunWeight;
             }
             // The moon's disk, which camera rays see too, and the stars (lights/star_field.h).
-            if (sunContains(scene.night.moon, dir))
-                out.radiance += throughput * scene.night.moon.radiance *
-                                bsdfFoundWeight(bounce, LightKind::Moon, settings.lightSamples,
-                                                lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.moonLight), 0.0f);
+            if (sunContains(scene.night.moon, dir)) {
+                float moonWeight = 1.0f;
+                if (!bounce.countsInFull)
+                    moonWeight = bsdfFoundWeight(bounce, LightKind::Moon, settings.lightSamples,
+                                                 lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.moonLight), 0.0f);
+                out.radiance += throughput * scene.night.moon.radiance * moonWeight;
+            }
             out.radiance += throughput * nightSkyRadiance(scene.night.stars, dir);
             pathEnds = true;
         } else {
