@@ -1,11 +1,15 @@
 """Relative MSE of EXR images against a reference (bench/many_lights.sh): the mean over pixels of
 (x - r)^2 / (r^2 + 1e-2 m^2), on luminance, with r the reference and m its mean (Rousselle et al. 2011's
 form, whose 1e-2 keeps black pixels from dominating, made independent of the image's exposure: a night
-is far darker than 1). Reads the scanline ZIP/ZIPS/uncompressed
-EXRs that `urbis render --out X.exr` writes, with the standard library alone (no numpy or OpenEXR
-module on the machines this runs on).
+is far darker than 1). A handful of fireflies can make that mean, so two robust figures come with it:
+the same mean after clamping both images' luminance to the reference's 99.9th percentile
+("clamped"), and the median over 16 x 16 pixel tiles of each tile's relative MSE ("tile median").
+The reference may be several EXRs joined by commas (renders with other seeds or samplers): their
+mean is the reference. Reads the scanline ZIP/ZIPS/uncompressed EXRs that `urbis render --out X.exr`
+writes, with the standard library alone (no numpy or OpenEXR module on the machines this runs on).
 
-usage: exr_error.py REFERENCE.exr IMAGE.exr [IMAGE.exr ...]   -> one line per image: path rel_mse
+usage: exr_error.py REFERENCE.exr[,REFERENCE2.exr...] IMAGE.exr [IMAGE.exr ...]
+       -> one line per image: path rel_mse clamped_rel_mse tile_median_rel_mse
 """
 import struct
 import sys
@@ -86,12 +90,52 @@ def rel_mse(reference, image):
     return sum((x - r) ** 2 / (r * r + eps) for x, r in zip(image, reference)) / len(reference)
 
 
+def clamped_rel_mse(reference, image):
+    """rel_mse with both images' values clamped to the reference's 99.9th percentile."""
+    ordered = sorted(reference)
+    top = ordered[min(len(ordered) - 1, int(0.999 * len(ordered)))]
+    return rel_mse([min(r, top) for r in reference], [min(x, top) for x in image])
+
+
+def tile_median_rel_mse(reference, image, width, tile=16):
+    """Median over tile x tile pixel blocks of each block's mean relative squared error (the
+    epsilon of rel_mse, from the whole reference's mean)."""
+    eps = 1e-2 * (sum(reference) / len(reference)) ** 2
+    height = len(reference) // width
+    errors = []
+    for ty in range(0, height, tile):
+        for tx in range(0, width, tile):
+            total, count = 0.0, 0
+            for y in range(ty, min(ty + tile, height)):
+                for i in range(y * width + tx, y * width + min(tx + tile, width)):
+                    r = reference[i]
+                    total += (image[i] - r) ** 2 / (r * r + eps)
+                    count += 1
+            errors.append(total / count)
+    errors.sort()
+    return errors[len(errors) // 2]
+
+
+def read_reference(paths):
+    """Width and the mean luminance of the EXRs named in `paths` (comma-separated)."""
+    images = [read_exr(p) for p in paths.split(",")]
+    width = images[0][0]
+    lums = [luminance(i) for i in images]
+    if any(i[0] != width or len(l) != len(lums[0]) for i, l in zip(images, lums)):
+        sys.exit(f"{paths}: references of different sizes")
+    return width, [sum(v) / len(lums) for v in zip(*lums)]
+
+
 def main(argv):
     if len(argv) < 3:
         sys.exit(__doc__)
-    reference = luminance(read_exr(argv[1]))
+    width, reference = read_reference(argv[1])
     for path in argv[2:]:
-        print(f"{path} {rel_mse(reference, luminance(read_exr(path))):.6g}")
+        image = luminance(read_exr(path))
+        if len(image) != len(reference):
+            sys.exit(f"{path}: not the reference's size")
+        print(f"{path} {rel_mse(reference, image):.6g} {clamped_rel_mse(reference, image):.6g} "
+              f"{tile_median_rel_mse(reference, image, width):.6g}")
 
 
 if __name__ == "__main__":

@@ -233,3 +233,23 @@ TEST(Atmosphere, SkyTableSamplesItsPdf) {
     const Vec3f towardsSun = normalize(Vec3f{scene.sun.direction.x, 0.3f, scene.sun.direction.z});
     EXPECT_GT(lightPdf(view, sky, towardsSun, 0, 0), lightPdf(view, sky, Vec3f{0, 1, 0}, 0, 0));
 }
+
+// A hand-built scene whose sky is the atmosphere but whose tables nobody built: buildLights builds
+// them first (it used to read the empty tables and crash), and the result is that of the two steps
+// in order, the sun dimmed by the atmosphere once.
+TEST(Atmosphere, BuildLightsBuildsTheTablesItNeeds) {
+    const auto scene = [](bool atmosphereFirst) {
+        Scene s = Scene::build(TriangleMesh{}, {Material{}});
+        s.sun = makeSun(20.0f, 150.0f, 0.27f, Vec3f{3, 3, 3});
+        s.sky.model = SkyModel::Atmosphere;
+        if (atmosphereFirst) buildAtmosphere(s);
+        buildLights(s);
+        return s;
+    };
+    const Scene direct = scene(false), twoSteps = scene(true);
+    ASSERT_FALSE(direct.skyViewLut.empty());
+    EXPECT_EQ(direct.skyViewLut.size(), twoSteps.skyViewLut.size());
+    EXPECT_FLOAT_EQ(direct.sun.radiance.x, twoSteps.sun.radiance.x);
+    EXPECT_EQ(direct.lightRecords.size(), twoSteps.lightRecords.size());
+    EXPECT_GT(luminance(skyRadiance(direct.view(), Vec3f{0, 1, 0})), 0.0f);
+}

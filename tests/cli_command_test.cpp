@@ -1,5 +1,6 @@
 // The urbis command's behaviour end to end: exit codes, outputs, memory, camera checks, messages.
 #include "cli_support.h"
+#include "film/film_output.h"
 
 #include <gtest/gtest.h>
 
@@ -86,6 +87,15 @@ TEST(CliCommand, AnImageTooLargeForTheMemoryIsRefusedUpFront) {
     expectFailure("bench --device cpu --width 16384 --height 16384 --max-memory 512M", 3, {"536870912 bytes"});
     auto dir = scratchDir("fits");
     EXPECT_EQ(runUrbis(kTiny + "--max-memory 512M", dir).exitCode, 0);
+}
+
+// --denoise adds its buffers (guide and two signals a pixel) to what the image needs up front.
+TEST(CliCommand, TheDenoisersBuffersCountInTheImagesMemory) {
+    const size_t plain = urbis::hostFilmBytes(4096, 4096, true), denoised = urbis::hostFilmBytes(4096, 4096, true, true);
+    ASSERT_GT(denoised, plain);
+    const std::string limit = std::to_string((plain + denoised) / 2);
+    expectFailure("render --width 4096 --height 4096 --denoise --max-memory " + limit + " --out out.png", 3,
+                  {"4096x4096", std::to_string(denoised) + " bytes"});
 }
 
 TEST(CliCommand, TheTriangleTwinRespectsMaxMemory) {

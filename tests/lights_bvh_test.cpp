@@ -67,8 +67,8 @@ TEST(LightBvh, ChoiceFitsPmf) {
 }
 
 // The pmfs of every light sum to one at many points (with infinite lights: the sun and the sky,
-// which take their fixed share), and the BVH's pick probabilities follow importance: a light
-// overhead is likelier than the same light far away.
+// which take their share: by power for the BVH, fixed for the colliders), and the BVH's pick
+// probabilities follow importance: a light overhead is likelier than the same light far away.
 TEST(LightBvh, PmfsSumToOne) {
     Scene scene = test::manyEmitterScene(300, 80.0f);
     scene.sun = makeSun(30.0f, 60.0f, 2.0f, Vec3f{3, 3, 3});
@@ -78,6 +78,10 @@ TEST(LightBvh, PmfsSumToOne) {
     buildLights(scene, options);
     const LightsView lights = scene.view().lights;
     ASSERT_EQ(lights.infiniteCount, 2u);
+    double infinitePower = 0, finitePower = 0;
+    for (uint32_t i = 0; i < lights.count; ++i)
+        (i == lights.sunLight || i == lights.skyLight ? infinitePower : finitePower) += lights.records[i].power;
+    ASSERT_GT(finitePower, 1e-3 * infinitePower);   // the tree keeps a share worth testing
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     for (int k = 0; k < 60; ++k) {
@@ -91,9 +95,10 @@ TEST(LightBvh, PmfsSumToOne) {
                 if (i == lights.sunLight || i == lights.skyLight) infinite += pmf;
             }
             EXPECT_NEAR(sum, 1.0, 1e-4) << "point " << k;
-            // Each infinite light counts as much as the whole tree (pbrt-v4); the colliders' tree is
-            // the lights near the point, and where there are none the infinite lights take every pick.
-            if (kind == LightSamplerKind::Bvh) EXPECT_NEAR(infinite, 2.0 / 3.0, 1e-6);
+            // The BVH: the infinite lights' power against the tree's. The colliders: each infinite
+            // light counts as much as the tree of the lights near the point (pbrt-v4's fixed share),
+            // and where there are none the infinite lights take every pick.
+            if (kind == LightSamplerKind::Bvh) EXPECT_NEAR(infinite, infinitePower / (infinitePower + finitePower), 1e-5);
             else EXPECT_TRUE(std::fabs(infinite - 1.0) < 1e-6 || std::fabs(infinite - 2.0 / 3.0) < 1e-6) << infinite;
         }
     }

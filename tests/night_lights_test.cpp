@@ -1,7 +1,8 @@
 // The night's lights: street lamps (flux of their profiles, the analytic irradiance they give a
 // plane), lit windows (shares by hour and use, their colours, a window's power), walls as aggregate
-// lights (the sampler against its pdf by chi-square, a wall's power the sum of its windows') and a
-// night scene that converges to the same image with and without light sampling of its windows.
+// lights (the pick of a lit cell and the sampler against their pmf and pdf, a wall's power the sum
+// of its windows') and a night scene that converges to the same image with and without light
+// sampling of its windows.
 #include "chi2_support.h"
 #include "citygen/window_schedule.h"
 #include "cpu/cpu_renderer.h"
@@ -195,6 +196,7 @@ TEST(NightWindows, WallPowerIsTheSumOfItsLitWindows) {
     const std::vector<Material> materials = wallMaterials();
     const Vec3f room = materials[2 + uint32_t(FacadeMaterial::RoomLit)].emission;
     double sum = 0, integrated = 0;
+    uint32_t lit = 0;
     for (uint32_t f = 0; f < w.floors; ++f)
         for (uint32_t s = 0; s < w.slots; ++s) {
             const CellLayout c = cellLayout(w, f, s);
@@ -209,6 +211,7 @@ TEST(NightWindows, WallPowerIsTheSumOfItsLitWindows) {
                                                      r.v0 + (r.v1 - r.v0) * (j + 0.5f) / n));
             integrated += M_PI * r.area() * mean / (n * n);
             sum += windowPower(look, r, room);
+            ++lit;
         }
     EXPECT_NEAR(integrated / sum, 1.0, 0.02);
     TriangleMesh mesh;
@@ -216,10 +219,49 @@ TEST(NightWindows, WallPowerIsTheSumOfItsLitWindows) {
     buildLights(scene);
     ASSERT_NE(scene.lights.firstWallLight, kNoLight);
     EXPECT_NEAR(scene.lightRecords[scene.lights.firstWallLight].power / sum, 1.0, 1e-4);
+    EXPECT_EQ(scene.lightRecords[scene.lights.firstWallLight].litCells, lit);
+}
+
+// The pick of a lit cell (uniform tries, the first lit one kept) against its pmf, on a wall whose
+// rooms are few lit (7 %: the deep night's share, where the tries reach their cap) and on one half
+// lit: each lit cell's count of 400,000 picks within 5 standard deviations of N x windowPickPmf, no
+// unlit cell picked, and the picks that find nothing within 5 standard deviations of N (1 - sum).
+TEST(NightWindows, LitCellPickMatchesItsPmf) {
+    for (const float share : {0.07f, 0.5f}) {
+        const WallRecord w = testWall(12, 10, share, 321u);
+        const uint32_t cells = w.slots * w.floors;
+        uint32_t lit = 0;
+        for (uint32_t f = 0; f < w.floors; ++f)
+            for (uint32_t s = 0; s < w.slots; ++s) lit += cellLit(w, cellLayout(w, f, s));
+        ASSERT_GT(lit, 2u);
+        const double pmf = windowPickPmf(cells, lit);
+        EXPECT_NEAR(pmf * lit, 1.0 - std::pow(1.0 - double(lit) / cells, windowPickTries(cells, lit)), 1e-5);
+        const int n = 400000;
+        std::vector<int> count(cells, 0);
+        int missed = 0;
+        std::mt19937 rng(17);
+        std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+        for (int i = 0; i < n; ++i) {
+            uint32_t floor, slot;
+            if (windowPickCell(w, lit, unit(rng), floor, slot)) ++count[floor * w.slots + slot];
+            else ++missed;
+        }
+        for (uint32_t f = 0; f < w.floors; ++f)
+            for (uint32_t s = 0; s < w.slots; ++s) {
+                const int c = count[f * w.slots + s];
+                if (!cellLit(w, cellLayout(w, f, s))) {
+                    EXPECT_EQ(c, 0) << "unlit cell " << f << ", " << s;
+                    continue;
+                }
+                EXPECT_NEAR(c, n * pmf, 5.0 * std::sqrt(n * pmf)) << "share " << share << " cell " << f << ", " << s;
+            }
+        const double miss = 1.0 - pmf * lit;
+        EXPECT_NEAR(missed, n * miss, 5.0 * std::sqrt(n * miss) + 1.0) << "share " << share;
+    }
 }
 
 // The aggregate's sampler against its pdf (chi-square over directions about the way to the wall),
-// and the pdf's integral: the share of the tile's cells that are lit (an unlit pick gives nothing).
+// and the pdf's integral: the chance that a pick finds a lit cell (windowPickPmf times the lit cells).
 TEST(NightWindows, AggregateSamplerMatchesItsPdf) {
     const WallRecord w = testWall(4, 3, 0.5f, 77u);
     const std::vector<Material> materials = wallMaterials();
@@ -237,7 +279,7 @@ TEST(NightWindows, AggregateSamplerMatchesItsPdf) {
     bins.smooth = false;
     const auto pdf = [&](Vec3f d) { return double(lightPdf(view, light, d, 0, 0, from)); };
     // The bins' expected counts are scaled to the samples (edges inside bins: chi2.h), so the
-    // sampler is conditioned on a lit cell by rejection: an unlit pick draws the cell again.
+    // sampler is conditioned on a lit cell by rejection: a pick that finds none draws again.
     std::mt19937 retry(5);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     const chi2::Outcome outcome = chi2::testDirections(
@@ -254,7 +296,8 @@ TEST(NightWindows, AggregateSamplerMatchesItsPdf) {
         for (uint32_t s = 0; s < w.slots; ++s) lit += cellLit(w, cellLayout(w, f, s));
     ASSERT_GT(lit, 0u);
     ASSERT_LT(lit, w.floors * w.slots);
-    EXPECT_NEAR(chi2::integratePdf(pdf, bins), double(lit) / (w.floors * w.slots), 0.01);
+    ASSERT_EQ(light.litCells, lit);
+    EXPECT_NEAR(chi2::integratePdf(pdf, bins), windowPickPmf(w.floors * w.slots, lit) * lit, 0.01);
 }
 
 // A small night scene: a plane before a wall of lit windows, the sun down, a black sky. MIS (light

@@ -39,6 +39,10 @@ struct DenoiseParams {
     uint32_t iterations = 5;      ///< a-trous steps 1, 2, 4, ... 2^(iterations-1) pixels
 };
 
+/// Bytes per pixel of the denoiser's buffers on either backend: the guide and two signals (one
+/// iteration reads one and writes the other).
+inline constexpr size_t kDenoiseBytesPerPixel = sizeof(DenoiseGuide) + 2 * sizeof(DenoiseSignal);
+
 /// Bits of a guide's id taken by the surface part (as SurfacePart's kSurfacePartBits).
 inline constexpr uint32_t kDenoisePartBits = 5;
 

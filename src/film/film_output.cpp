@@ -1,5 +1,6 @@
 #include "film/film_output.h"
 
+#include "film/denoise_filter.h"
 #include "film/exr_file.h"
 #include "film/tone_map.h"
 #include "base/input_error.h"
@@ -42,10 +43,13 @@ void writeFilm(const Film& film, const std::string& path, const FilmOutputOption
     }
 }
 
-size_t hostFilmBytes(uint32_t width, uint32_t height, bool withAovs) {
+size_t hostFilmBytes(uint32_t width, uint32_t height, bool withAovs, bool denoise) {
     // PNG: the 8-bit image and libpng's row (its own state is a few KiB).
     const size_t png = size_t(width) * height * 3 + size_t(width) * 3;
-    return Film::bytesFor(width, height, withAovs) + std::max(png, withAovs ? exrWriteBytes(width, height) : size_t(0));
+    // The denoiser's buffers are freed before the file is written.
+    const size_t beside = std::max({png, withAovs ? exrWriteBytes(width, height) : size_t(0),
+                                    denoise ? size_t(width) * height * kDenoiseBytesPerPixel : size_t(0)});
+    return Film::bytesFor(width, height, withAovs) + beside;
 }
 
 } // namespace urbis

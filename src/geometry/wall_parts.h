@@ -87,6 +87,23 @@ struct CellLayout {
     bool balcony;
 };
 
+/// A cell's first two draws, whatever the cell: whether its room is lit (against the chance of a
+/// shop window or of a room, which the hour and the building's use set: citygen/window_schedule.h),
+/// and its opening (`choice`). The lit-window light sampler asks only this (lights/window_light.h).
+struct CellDraws {
+    bool lit, shopWindow;
+    float choice;
+};
+
+URBIS_HD inline CellDraws cellDraws(const WallRecord& wall, uint32_t floor, uint32_t slot) {
+    HashStream rng = cellRandom(wall, floor, slot);
+    const float litDraw = rng.uniform(), choice = rng.uniform();
+    const bool shopWindow = wall.style == WallStyle::Punched && (wall.flags & kWallShopFront) && floor == 0 &&
+                            choice < kShopWindowChance;
+    const float chance = float(shopWindow ? wall.shopLitChance : wall.litChance) * (1.0f / 255.0f);
+    return {litDraw < chance, shopWindow, choice};
+}
+
 /// The layout of cell (floor, slot) of `wall`; exact arithmetic (urbis.h): it decides hits.
 URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, uint32_t slot) {
     CellLayout c;
@@ -94,14 +111,10 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
     c.u1 = c.u0 + wall.slotWidth;
     c.v0 = wall.floorV(int(floor));
     c.v1 = c.v0 + wall.floorHeight;
-    HashStream rng = cellRandom(wall, floor, slot);
-    // Two draws, whatever the cell: whether its room is lit (against the chance of a shop window or
-    // of a room, which the hour and the building's use set: citygen/window_schedule.h), and its opening.
-    const float litDraw = rng.uniform(), choice = rng.uniform();
-    const bool shopWindow = wall.style == WallStyle::Punched && (wall.flags & kWallShopFront) && floor == 0 &&
-                            choice < kShopWindowChance;
-    const float chance = float(shopWindow ? wall.shopLitChance : wall.litChance) * (1.0f / 255.0f);
-    c.roomMaterial = wall.facadeMaterials + uint32_t(litDraw < chance ? FacadeMaterial::RoomLit : FacadeMaterial::RoomDark);
+    const CellDraws draws = cellDraws(wall, floor, slot);
+    const bool shopWindow = draws.shopWindow;
+    const float choice = draws.choice;
+    c.roomMaterial = wall.facadeMaterials + uint32_t(draws.lit ? FacadeMaterial::RoomLit : FacadeMaterial::RoomDark);
     c.balcony = false;
     if (wall.style == WallStyle::Curtain) {
         c.ou0 = c.u0 + kHalfMullion, c.ou1 = c.u1 - kHalfMullion;

@@ -285,7 +285,7 @@ void GpuScene::denoise(const DenoiseParams& params) {
     const FilmView film = m.filmView();
     if (!film.hasAovs()) throw std::invalid_argument("GpuScene::denoise: the film keeps no AOVs to guide the filter");
     const size_t pixels = size_t(film.width) * film.height;
-    m.requireFree(pixels * (sizeof(DenoiseGuide) + 2 * sizeof(DenoiseSignal)), "the denoiser");
+    m.requireFree(pixels * kDenoiseBytesPerPixel, "the denoiser");
     // Held for this call only: a frame's guide and two signals, the iterations' ping-pong.
     DeviceBuffer<DenoiseGuide> guide(pixels);
     DeviceBuffer<DenoiseSignal> signal(pixels), next(pixels);

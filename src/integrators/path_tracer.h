@@ -110,8 +110,9 @@ URBIS_HD inline Vec3f foundEmission(const SceneView& scene, const RenderSettings
         if (hit.material != wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)) return material.emission;
         const Vec3f L = litRoomRadiance(wall, material.emission, ray.origin, dir, hit.uv);
         if (!bounce.windowPath || lights.firstWallLight == kNoLight || settings.lightSamples == 0) return L;
-        const float pdf = lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.firstWallLight + hit.index) *
-                          wallWindowsPdf(wall, bounce.from.p, dir);
+        const uint32_t light = lights.firstWallLight + hit.index;
+        const float pdf = lightSelectionPmf(lights, settings.lightSampler, bounce.from, light) *
+                          wallWindowsPdf(wall, lightRecord(lights, light).litCells, bounce.from.p, dir);
         return pdf > 0.0f ? L * powerHeuristic(1.0f, bounce.pdf, float(settings.lightSamples), pdf) : L;
     }
     // An emitter found by BSDF sampling: weighed against its light samples where it has any.

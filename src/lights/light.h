@@ -26,7 +26,7 @@ URBIS_HD inline const Sun& diskLight(const SceneView& scene, LightKind kind) {
 }
 
 /// Samples `light` as seen from `from` with three uniform numbers. Returns false when it gives
-/// nothing there (a disabled sun, an edge-on surface, an unlit window, a reserved kind).
+/// nothing there (a disabled sun, an edge-on surface, no lit window found, a reserved kind).
 URBIS_HD inline bool sampleLight(const SceneView& scene, const LightRecord& light, Vec3f from, float u0, float u1,
                                  float u2, LightSample& s) {
     switch (light.kind) {
@@ -54,7 +54,7 @@ URBIS_HD inline bool sampleLight(const SceneView& scene, const LightRecord& ligh
         const WallRecord& wall = scene.walls[light.index];
         const Vec3f room = scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)].emission;
         const Material& glass = scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::Glass)];
-        return sampleWallWindows(wall, room, glass, from, u0, u1, u2, s.dir, s.distance, s.pdf, s.radiance);
+        return sampleWallWindows(wall, light.litCells, room, glass, from, u0, u1, u2, s.dir, s.distance, s.pdf, s.radiance);
     }
     case LightKind::Spot:
         return false;
@@ -78,7 +78,7 @@ URBIS_HD inline float lightPdf(const SceneView& scene, const LightRecord& light,
     case LightKind::EmissiveSurface:
         return emissiveSurfacePdf(scene.lights.surfaces[light.index], distance, cosLight);
     case LightKind::Aggregate:  // `dir` from the shading point `from`
-        return wallWindowsPdf(scene.walls[light.index], from, dir);
+        return wallWindowsPdf(scene.walls[light.index], light.litCells, from, dir);
     case LightKind::Point:      // a delta light: no direction reaches it by BSDF sampling
     case LightKind::Spot:
         return 0.0f;

@@ -5,6 +5,7 @@
 #include "lights/sky_light.h"
 #include "lights/sun_light.h"
 #include "lights/window_light.h"
+#include "media/atmosphere_build.h"
 #include "scene/lamp_emission.h"
 #include "scene/lamp_pieces.h"
 
@@ -128,7 +129,8 @@ LampEmitter lampEmitterOf(const LampRecord& lamp) {
 }
 
 /// The street lamps (one Point light each, in the order of scene.lamps) and every wall record's lit
-/// windows (one Aggregate each, in the order of scene.walls), with their flux as power.
+/// windows (one Aggregate each, in the order of scene.walls), with their flux as power and their
+/// count of lit cells, which the wall's sampler picks among.
 void addNightLights(const Scene& scene, const LightBuildOptions& options, BuiltLights& lights) {
     if (options.lamps && !scene.lamps.empty()) {
         lights.info.firstLampLight = uint32_t(lights.records.size());
@@ -139,12 +141,13 @@ void addNightLights(const Scene& scene, const LightBuildOptions& options, BuiltL
     }
     if (options.windows && !scene.walls.empty()) {
         lights.info.firstWallLight = uint32_t(lights.records.size());
-        std::vector<float> power(scene.walls.size());
+        std::vector<WallWindowsTotals> totals(scene.walls.size());
         tbb::parallel_for(size_t(0), scene.walls.size(), [&](size_t i) {
             const WallRecord& wall = scene.walls[i];
-            power[i] = wallWindowsPower(wall, scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)].emission);
+            totals[i] = wallWindowsTotals(wall, scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)].emission);
         });
-        for (uint32_t i = 0; i < scene.walls.size(); ++i) lights.records.push_back({LightKind::Aggregate, i, power[i]});
+        for (uint32_t i = 0; i < scene.walls.size(); ++i)
+            lights.records.push_back({LightKind::Aggregate, i, totals[i].power, totals[i].litCells});
     }
 }
 
@@ -172,6 +175,7 @@ LightBounds emissiveSurfaceBounds(const Scene& scene, const EmissiveSurface& sur
 } // namespace
 
 void buildLights(Scene& scene, const LightBuildOptions& options) {
+    if (scene.sky.model == SkyModel::Atmosphere && scene.skyViewLut.empty()) buildAtmosphere(scene);
     BuiltLights lights;
     const double radius = sceneRadius(scene);
     const double disk = double(kPi) * radius * radius;

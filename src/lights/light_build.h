@@ -29,7 +29,8 @@ struct LightBuildOptions {
 
 /// Fills the light arrays of `scene` (scene_arrays.h) and scene.lights from the rest of it. What is left out of the list is still found by
 /// BSDF sampling and counted in full; so is an emitting material that a wall or the ground also
-/// uses (their emission cannot be light-sampled yet).
+/// uses (their emission cannot be light-sampled yet). A sky of the atmosphere model whose tables
+/// were not built (buildAtmosphere) gets them first: the sky's table is made from them.
 void buildLights(Scene& scene, const LightBuildOptions& options = {});
 
 /// The light BVH's input for one light of the list (scene/light_bounds.h): one function per kind

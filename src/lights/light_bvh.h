@@ -3,7 +3,8 @@
 // any given light, following the light's bit trail down the same descent. Conty Estevez and Kulla
 // 2018, "Importance Sampling of Many Lights with Adaptive Tree Splitting", section 5 (without the
 // adaptive splitting); pbrt-v4 BVHLightSampler::Sample and ::PMF. Infinite lights (sun, sky) are not
-// in the tree: they take a fixed share of the choices, as in pbrt-v4. No recursion, no allocation.
+// in the tree: they take a share of the choices by their power against the tree's. No recursion, no
+// allocation.
 #pragma once
 
 #include "scene/light_records.h"
@@ -65,8 +66,8 @@ URBIS_HD inline float lightBvhImportance(const LightBvhNode& node, const LightSa
     return fmaxf(importance, 0.0f);
 }
 
-/// Share of the choices that go to the infinite lights: each infinite light counts as much as the
-/// whole tree (pbrt-v4), `finite` says whether there is anything else to choose.
+/// The colliders' share of the choices for the infinite lights: each counts as much as the whole
+/// tree (pbrt-v4's fixed share), `finite` says whether there is anything else to choose.
 URBIS_HD inline float infiniteShare(const LightsView& lights, bool finite) {
     if (lights.infiniteCount == 0) return 0.0f;
     return float(lights.infiniteCount) / float(lights.infiniteCount + (finite ? 1u : 0u));
@@ -77,6 +78,34 @@ URBIS_HD inline uint32_t pickInfiniteLight(const LightsView& lights, float share
     const uint32_t n = lights.infiniteCount;
     pmf = share / float(n);
     return lights.infiniteLights[uint32_t(fminf(u / share * float(n), float(n - 1)))];
+}
+
+/// The light BVH's share of the choices for the infinite lights: their power against the tree's
+/// (its root's phi), as the power sampler weighs them; all of them where the tree is empty. pbrt-v4
+/// gives each infinite light as much as the whole tree, so that at night a dim sky took half the
+/// picks. Fills `infinitePower`, their power together.
+URBIS_HD inline float bvhInfiniteShare(const LightsView& lights, float& infinitePower) {
+    infinitePower = 0.0f;
+    for (uint32_t i = 0; i < lights.infiniteCount; ++i) infinitePower += lights.records[lights.infiniteLights[i]].power;
+    if (lights.infiniteCount == 0 || !(infinitePower > 0.0f)) return 0.0f;
+    if (lights.bvhNodeCount == 0) return 1.0f;
+    return infinitePower / (infinitePower + lights.bvhNodes[0].phi);
+}
+
+/// Picks one of the infinite lights in proportion to its power with u in [0, share) (`share` and
+/// `infinitePower` from bvhInfiniteShare): its index and probability.
+URBIS_HD inline uint32_t pickInfiniteLightByPower(const LightsView& lights, float share, float infinitePower, float u,
+                                                  float& pmf) {
+    const float target = u / share * infinitePower;
+    float sum = 0.0f;
+    uint32_t light = lights.infiniteLights[0];
+    for (uint32_t i = 0; i < lights.infiniteCount; ++i) {
+        light = lights.infiniteLights[i];
+        sum += lights.records[light].power;
+        if (target < sum && lights.records[light].power > 0.0f) break;
+    }
+    pmf = share * lights.records[light].power / infinitePower;
+    return light;
 }
 
 /// Whether `light` is one of the infinite lights.
@@ -97,8 +126,9 @@ URBIS_HD inline float childProbability(float c0, float c1, bool second) { return
 /// the probability of that pick (kNoLight and 0 where nothing there has importance).
 URBIS_HD inline uint32_t sampleLightBvh(const LightsView& lights, const LightSampleContext& ctx, float u, float& pmf) {
     pmf = 0.0f;
-    const float share = infiniteShare(lights, lights.bvhNodeCount > 0);
-    if (u < share) return pickInfiniteLight(lights, share, u, pmf);
+    float infinitePower;
+    const float share = bvhInfiniteShare(lights, infinitePower);
+    if (u < share) return pickInfiniteLightByPower(lights, share, infinitePower, u, pmf);
     if (lights.bvhNodeCount == 0) return kNoLight;
     u = fminf((u - share) / (1.0f - share), kOneMinusEpsilon);
     float p = 1.0f - share;
@@ -127,9 +157,11 @@ URBIS_HD inline uint32_t sampleLightBvh(const LightsView& lights, const LightSam
 /// Probability that sampleLightBvh(ctx) picks light `index`: its bit trail says which child it lies
 /// under at each depth, and the same importances give each step's probability.
 URBIS_HD inline float lightBvhPmf(const LightsView& lights, const LightSampleContext& ctx, uint32_t index) {
-    const float share = infiniteShare(lights, lights.bvhNodeCount > 0);
+    float infinitePower;
+    const float share = bvhInfiniteShare(lights, infinitePower);
     uint64_t trail = lights.bvhTrails[index];
-    if (trail == kNoLightTrail) return isInfiniteLight(lights, index) ? share / float(lights.infiniteCount) : 0.0f;
+    if (trail == kNoLightTrail)
+        return isInfiniteLight(lights, index) && share > 0.0f ? share * lights.records[index].power / infinitePower : 0.0f;
     float p = 1.0f - share;
     for (uint32_t i = 0;;) {
         const LightBvhNode& node = lights.bvhNodes[i];

@@ -1,8 +1,8 @@
 // Lit windows (host+device): how each lit room looks (colour temperature, intensity, a curtain, the
 // thesis's per-window noise), and a wall record (a tile) as one aggregate light of its lit
 // windows. Everything comes from hashes of (wall seed, floor, slot): nothing per window is stored.
-// A light sample picks a cell of the tile uniformly (an unlit one gives nothing) and a uniform
-// point of its glass; the window's glass plane is the emitter, its radiance the room's behind it
+// A light sample picks a lit cell of the tile (uniform tries, the first lit one; the wall's count
+// of lit cells, made at build, gives the exact pdf) and a uniform point of its glass; the window's glass plane is the emitter, its radiance the room's behind it
 // through the pane (docs/lights.md § Lit windows).
 #pragma once
 
@@ -109,19 +109,51 @@ URBIS_HD inline Vec3f glassTransmission(const Material& glass, float cosine) {
 /// w of the windows' glass plane (wall coordinates).
 URBIS_HD inline float glassPlaneW(const WallRecord& wall) { return -wall.reveal; }
 
-/// A lit window of `wall` seen from `from` with three uniform numbers: a cell of the tile (uniform:
-/// an unlit one gives false), a uniform point of its glass. Fills the unit direction, the distance,
-/// the solid-angle pdf and the radiance arriving through the pane (`room`: the lit room's emission,
-/// `glass`: the pane's material). Only from in front of the glass plane.
-URBIS_HD inline bool sampleWallWindows(const WallRecord& wall, Vec3f room, const Material& glass, Vec3f from, float u0,
-                                       float u1, float u2, Vec3f& dir, float& distance, float& pdf, Vec3f& radiance) {
+/// Most tries of a lit-cell pick (windowPickTries).
+inline constexpr uint32_t kMaxWindowPickTries = 32;
+
+/// How many uniform tries over the tile's `cells` a pick among its `lit` cells makes: enough that
+/// all miss with a chance of about e^-3 (5 %), at most kMaxWindowPickTries. Integer arithmetic, so
+/// that the sampler and the pdf agree on both backends.
+URBIS_HD inline uint32_t windowPickTries(uint32_t cells, uint32_t lit) {
+    return lit == 0 ? 0u : (3u * cells + lit - 1u) / lit < kMaxWindowPickTries ? (3u * cells + lit - 1u) / lit : kMaxWindowPickTries;
+}
+
+/// Probability with which the pick of windowPickCell returns one given lit cell of a tile of `cells`
+/// cells, `lit` of them lit: K uniform tries keep the first lit cell, so a lit cell comes out with
+/// (1 - (1 - p)^K) / lit, p = lit / cells (all K miss otherwise: no sample).
+URBIS_HD inline float windowPickPmf(uint32_t cells, uint32_t lit) {
+    if (lit == 0 || cells == 0) return 0.0f;
+    const float miss = 1.0f - float(lit) / float(cells);
+    return (1.0f - powf(miss, float(windowPickTries(cells, lit)))) / float(lit);
+}
+
+/// Picks a lit cell of `wall`'s tile (`lit`: its lit cells, the light record's litCells) with the
+/// uniform number u: the first try takes u's cell, later tries draw from a hash of u; the first
+/// lit one is kept. False when every try finds an unlit cell. Fills the cell's floor and slot.
+URBIS_HD inline bool windowPickCell(const WallRecord& wall, uint32_t lit, float u, uint32_t& floor, uint32_t& slot) {
     const uint32_t n = tileCellCount(wall), across = uint32_t(wall.tileSlotEnd() - int(wall.slot0));
-    if (n == 0) return false;
-    const uint32_t k = uint32_t(fminf(u0 * float(n), float(n - 1)));
-    const uint32_t floor = wall.floor0 + k / across, slot = wall.slot0 + k % across;
-    const CellLayout c = cellLayout(wall, floor, slot);
-    if (!cellLit(wall, c)) return false;
-    const WindowRect r = windowRect(wall, c);
+    const uint32_t tries = n == 0 ? 0u : windowPickTries(n, lit);
+    HashStream more{hash2(uint32_t(u * 16777216.0f), 0x5bd1e995u)};
+    for (uint32_t t = 0; t < tries; ++t) {
+        const float x = t == 0 ? u : more.uniform();
+        const uint32_t k = uint32_t(fminf(x * float(n), float(n - 1)));
+        floor = wall.floor0 + k / across;
+        slot = wall.slot0 + k % across;
+        if (cellDraws(wall, floor, slot).lit) return true;
+    }
+    return false;
+}
+
+/// A lit window of `wall` (`lit`: its tile's lit cells) seen from `from` with three uniform
+/// numbers: a lit cell (windowPickCell), a uniform point of its glass. Fills the unit direction, the
+/// distance, the solid-angle pdf and the radiance arriving through the pane (`room`: the lit room's
+/// emission, `glass`: the pane's material). Only from in front of the glass plane.
+URBIS_HD inline bool sampleWallWindows(const WallRecord& wall, uint32_t lit, Vec3f room, const Material& glass, Vec3f from,
+                                       float u0, float u1, float u2, Vec3f& dir, float& distance, float& pdf, Vec3f& radiance) {
+    uint32_t floor, slot;
+    if (!windowPickCell(wall, lit, u0, floor, slot)) return false;
+    const WindowRect r = windowRect(wall, cellLayout(wall, floor, slot));
     const float u = r.u0 + (r.u1 - r.u0) * u1, v = r.v0 + (r.v1 - r.v0) * u2;
     const Vec3f toPoint = wall.worldFromWall(u, v, glassPlaneW(wall)) - from;
     distance = length(toPoint);
@@ -129,14 +161,14 @@ URBIS_HD inline bool sampleWallWindows(const WallRecord& wall, Vec3f room, const
     dir = toPoint / distance;
     const float cosine = -dot(dir, wall.normal);
     if (!(cosine > 0.0f) || !(r.area() > 0.0f)) return false;
-    pdf = distance * distance / (cosine * r.area() * float(n));
+    pdf = distance * distance * windowPickPmf(tileCellCount(wall), lit) / (cosine * r.area());
     radiance = windowRadiance(windowLook(wall, floor, slot), r, room, u, v) * glassTransmission(glass, cosine);
     return true;
 }
 
 /// Solid-angle pdf with which sampleWallWindows returns unit direction `dir` from `from`: where the
 /// ray meets the glass plane in front of it, inside the glass of a lit cell of the tile.
-URBIS_HD inline float wallWindowsPdf(const WallRecord& wall, Vec3f from, Vec3f dir) {
+URBIS_HD inline float wallWindowsPdf(const WallRecord& wall, uint32_t lit, Vec3f from, Vec3f dir) {
     const float cosine = -dot(dir, wall.normal);
     const float height = dot(from - wall.origin, wall.normal) - glassPlaneW(wall);
     if (!(cosine > 0.0f) || !(height > 0.0f)) return 0.0f;
@@ -150,7 +182,7 @@ URBIS_HD inline float wallWindowsPdf(const WallRecord& wall, Vec3f from, Vec3f d
     const CellLayout c = cellLayout(wall, uint32_t(ff), uint32_t(fs));
     const WindowRect r = windowRect(wall, c);
     if (!cellLit(wall, c) || u < r.u0 || u > r.u1 || v < r.v0 || v > r.v1 || !(r.area() > 0.0f)) return 0.0f;
-    return t * t / (cosine * r.area() * float(tileCellCount(wall)));
+    return t * t * windowPickPmf(tileCellCount(wall), lit) / (cosine * r.area());
 }
 
 /// The radiance a lit room of `wall` shows to a ray with unit direction `dir` through `origin` that
@@ -171,15 +203,23 @@ URBIS_HD inline Vec3f litRoomRadiance(const WallRecord& wall, Vec3f room, Vec3f 
     return windowRadiance(windowLook(wall, floor, slot), windowRect(wall, c), room, at.x, at.y);
 }
 
-/// Expected flux of the lit windows of a wall record's tile (windowPower summed over its lit cells).
-URBIS_HD inline float wallWindowsPower(const WallRecord& wall, Vec3f room) {
-    float sum = 0.0f;
+/// What the light build needs of a wall record's lit windows, from one walk over its tile.
+struct WallWindowsTotals {
+    float power = 0;        ///< expected flux: windowPower summed over the lit cells
+    uint32_t litCells = 0;
+};
+
+/// The lit windows of a wall record's tile, counted and their expected flux summed.
+URBIS_HD inline WallWindowsTotals wallWindowsTotals(const WallRecord& wall, Vec3f room) {
+    WallWindowsTotals out;
     for (int f = int(wall.floor0); f < wall.tileFloorEnd(); ++f)
         for (int s = int(wall.slot0); s < wall.tileSlotEnd(); ++s) {
             const CellLayout c = cellLayout(wall, uint32_t(f), uint32_t(s));
-            if (cellLit(wall, c)) sum += windowPower(windowLook(wall, uint32_t(f), uint32_t(s)), windowRect(wall, c), room);
+            if (!cellLit(wall, c)) continue;
+            out.power += windowPower(windowLook(wall, uint32_t(f), uint32_t(s)), windowRect(wall, c), room);
+            ++out.litCells;
         }
-    return sum;
+    return out;
 }
 
 /// Bounds of a wall record's lit windows for the light BVH: the tile's glass plane, its flux `phi`,

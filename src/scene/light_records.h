@@ -27,6 +27,7 @@ struct LightRecord {
     LightKind kind = LightKind::Sun;
     uint32_t index = 0;  ///< into the array of its kind (0 for the sun, the moon and the sky)
     float power = 0;     ///< luminous flux in the renderer's units (lights/light_build.cpp says how)
+    uint32_t litCells = 0;  ///< Aggregate: the lit cells of its tile, which its sampler picks among (lights/window_light.h)
 };
 
 /// An emitting surface: triangles of one emitting material, sampled uniformly by area. It emits

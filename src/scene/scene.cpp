@@ -57,8 +57,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
             pieces.assign(1, box);
             if constexpr (std::is_same_v<PrimRecord<kind.index>, Triangle>) {
                 const uint32_t material = mesh.info[i].material;
-                const Vec3f e = material < materials.size() ? materials[material].emission : Vec3f{0, 0, 0};
-                const bool emits = e.x > 0.0f || e.y > 0.0f || e.z > 0.0f;
+                const bool emits = material < materials.size() && maxComponent(materials[material].emission) > 0.0f;
                 if (box.hi.y <= lowTop && !emits) {
                     pieces.clear();
                     splitTriangleBounds(records[i].p0, records[i].p1, records[i].p2, split, pieces);
