@@ -1,7 +1,7 @@
 // The terrain: the noise's analytic derivatives, the hierarchy's bounds, the conservative march
 // against the fixed-step reference (the accuracy goals at a small size), DEM samples against GDAL's
 // own values, and a building on a slope with no gap under it.
-#include "app/terrain_accuracy.h"
+#include "base/input_error.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_on_terrain.h"
 #include "citygen/city_scene.h"
@@ -9,6 +9,7 @@
 #include "math/value_noise.h"
 #include "scene/camera.h"
 #include "terrain/dem_raster.h"
+#include "terrain/march_accuracy.h"
 #include "terrain/terrain_build.h"
 
 #include <gdal_priv.h>

@@ -5,6 +5,7 @@
 #include "gpu/gpu_backend.h"
 #include "io/atomic_file.h"
 #include "scene/camera.h"
+#include "scene/scene.h"
 #include "terrain/terrain_build.h"
 
 #include <nlohmann/json.hpp>
@@ -17,9 +18,6 @@
 
 namespace urbis {
 namespace {
-
-/// Metres by which a hit may differ from the reference's and still be the same intersection.
-constexpr double kSameHit = 1.0;
 
 double medianOf(std::vector<float> v) {
     if (v.empty()) return 0.0;
@@ -69,34 +67,6 @@ void traceMarch(TerrainField field, TerrainMarch march, const std::vector<Ray>& 
 }
 
 } // namespace
-
-MarchAccuracy marchAccuracy(const TerrainRecord& terrain, const float* data, const std::vector<Ray>& rays,
-                            const std::vector<float>& t, const std::vector<float>& reference) {
-    MarchAccuracy a;
-    size_t both = 0;
-    for (size_t i = 0; i < rays.size(); ++i) {
-        const double len = std::sqrt(double(dot(rays[i].dir, rays[i].dir)));
-        const bool hit = t[i] >= 0.0f, refHit = reference[i] >= 0.0f;
-        if (hit) {
-            ++a.hits;
-            const Vec3f p = pointAt(rays[i], t[i]);
-            const double hde = std::fabs(double(p.y) - double(terrainHeight(terrain, data, p.x, p.z)));
-            a.meanHde += hde;
-            a.maxHde = std::max(a.maxHde, hde);
-        }
-        if (refHit && (!hit || (double(t[i]) - double(reference[i])) * len > kSameHit)) ++a.missed;
-        else if (hit && (!refHit || (double(reference[i]) - double(t[i])) * len > kSameHit)) ++a.extra;
-        else if (hit && refHit) {
-            const double ide = std::fabs(double(t[i]) - double(reference[i])) * len;
-            a.meanIde += ide;
-            a.maxIde = std::max(a.maxIde, ide);
-            ++both;
-        }
-    }
-    a.meanHde /= double(std::max<size_t>(a.hits, 1));
-    a.meanIde /= double(std::max<size_t>(both, 1));
-    return a;
-}
 
 void runTerrainAccuracy(const BenchOptions& o, bool onGpu, const std::string& deviceName, int repeats) {
     const SceneDescription& d = o.render.scene;

@@ -81,8 +81,9 @@ URBIS_HD inline bool intersectTerrainCell(const TerrainRecord& t, const float* d
             r0 = r1, r1 = r;
         }
     }
-    for (const float s : {r0, r1}) {
-        const float hit = exactAdd(te, s);
+    const float roots[2] = {r0, r1};
+    for (int k = 0; k < 2; ++k) {
+        const float hit = exactAdd(te, roots[k]);
         if (hit >= te && hit <= tx && hit > ray.tmin && hit < ray.tmax) {
             hitT = hit;
             return true;

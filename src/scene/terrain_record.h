@@ -55,7 +55,7 @@ struct TerrainRecord {
 };
 
 /// World bounds of the terrain.
-inline Bounds3f primBounds(const TerrainRecord& t) {
+URBIS_HD inline Bounds3f primBounds(const TerrainRecord& t) {
     return {{t.x0, t.yMin, t.z0}, {t.x0 + t.cell * float(t.nx - 1), t.yMax, t.z0 + t.cell * float(t.nz - 1)}};
 }
 

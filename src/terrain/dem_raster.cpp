@@ -116,6 +116,15 @@ void DemRaster::pixelOf(double lon, double lat, double& col, double& row) const 
     GDALApplyGeoTransform(transforms_->toPixel, x, y, &col, &row);
 }
 
+void DemRaster::pixelsOf(std::vector<double>& lon, std::vector<double>& lat) const {
+    if (transforms_->fromWgs84 && !lon.empty()) transforms_->fromWgs84->Transform(lon.size(), lon.data(), lat.data());
+    for (size_t i = 0; i < lon.size(); ++i) {
+        double col, row;
+        GDALApplyGeoTransform(transforms_->toPixel, lon[i], lat[i], &col, &row);
+        lon[i] = col, lat[i] = row;
+    }
+}
+
 void DemRaster::lonLatOf(double col, double row, double& lon, double& lat) const {
     GDALApplyGeoTransform(transforms_->fromPixel, col, row, &lon, &lat);
     if (transforms_->toWgs84) transforms_->toWgs84->Transform(1, &lon, &lat);

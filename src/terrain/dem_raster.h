@@ -20,6 +20,9 @@ public:
 
     /// The pixel position (column, row; pixel centres at + 0.5) of a WGS84 point, degrees.
     void pixelOf(double lon, double lat, double& col, double& row) const;
+    /// pixelOf for many points at once, in place: longitudes become columns, latitudes rows. One
+    /// call of GDAL's transformation, which is not to be shared between threads.
+    void pixelsOf(std::vector<double>& lon, std::vector<double>& lat) const;
     /// The WGS84 point (degrees) of pixel position (col, row).
     void lonLatOf(double col, double row, double& lon, double& lat) const;
     /// The elevation at pixel position (col, row), bilinear or Catmull-Rom bicubic between the

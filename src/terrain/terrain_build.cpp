@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 
 namespace urbis {
@@ -95,6 +96,20 @@ TerrainField buildTerrain(const TerrainParams& params, const GeoOrigin& origin, 
         detail.warp = 0;
         detail.erosion = 0;
     }
+    // The DEM's pixel position of every sample: unprojected in parallel, transformed in one call.
+    std::vector<double> cols, rows;
+    if (dem) {
+        cols.resize(size_t(nx) * nz);
+        rows.resize(cols.size());
+        tbb::parallel_for(uint32_t(0), nz, [&](uint32_t j) {
+            for (uint32_t i = 0; i < nx; ++i) {
+                const LonLat ll = dem->projection.unproject({double(xa + cell * float(i)), -double(za + cell * float(j))});
+                cols[size_t(j) * nx + i] = ll.lon;
+                rows[size_t(j) * nx + i] = ll.lat;
+            }
+        });
+        dem->raster.pixelsOf(cols, rows);
+    }
     std::vector<float> heights(size_t(nx) * nz);
     tbb::parallel_for(uint32_t(0), nz, [&](uint32_t j) {
         for (uint32_t i = 0; i < nx; ++i) {
@@ -107,9 +122,7 @@ TerrainField buildTerrain(const TerrainParams& params, const GeoOrigin& origin, 
                 inside = std::min({x - xa, xb - x, z - za, zb - z});
             }
             if (dem) {
-                const LonLat ll = dem->projection.unproject({double(x), double(-z)});
-                double col, row;
-                dem->raster.pixelOf(ll.lon, ll.lat, col, row);
+                const double col = cols[size_t(j) * nx + i], row = rows[size_t(j) * nx + i];
                 h += dem->raster.sample(col, row, params.interpolation == "bicubic");
                 h += fbmTerrainHeight(detail, {x, z});
                 const double px = dem->raster.pixelMetres();
