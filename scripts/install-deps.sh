@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev libembree-dev                           # tests, benchmarks, speed reference
   python-osmnx-doc                                                      # a tiny real OSM extract for the tests
   python3                                                               # scripts/check_layers.py (ctest: layers)
+  libgdal-dev                                                           # DEM rasters for the terrain (--dem)
 )
 
 missing=()

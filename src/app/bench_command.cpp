@@ -4,6 +4,7 @@
 #include "app/memory_limit.h"
 #include "app/output_paths.h"
 #include "app/render_device.h"
+#include "app/terrain_accuracy.h"
 #include "description/scene_json.h"
 #include "description/scene_parts.h"
 #include "gpu/gpu_backend.h"
@@ -46,12 +47,16 @@ void addBenchCommand(CLI::App& app, BenchCommandLine& line) {
     RunOptions& r = o.render.run;
     r.device = "cuda";
     line.scene.addOptions(*cmd, {"--osm", "--buildings", "--bbox", "--width", "--height", "--spp", "--seed", "--time", "--location", "--sun",
-                                 "--camera", "--camera-geo", "--geometry", "--no-streets", "--sky", "--no-aerial-perspective"});
+                                 "--camera", "--camera-geo", "--geometry", "--no-streets", "--sky", "--no-aerial-perspective",
+                                 "--terrain", "--dem", "--terrain-march"});
     cmd->add_option("--device", r.device, "cuda, cpu, or auto")->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
     cmd->add_option("--threads", r.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
     cmd->add_option("--repeats", o.repeats, "Timed runs per measurement (0: 20 on the GPU, 3 on the CPU)")->check(CLI::Range(0, 10000))->capture_default_str();
     cmd->add_option("--warmup", o.warmup, "Untimed runs first (GPU)")->check(CLI::Range(0, 1000))->capture_default_str();
     cmd->add_option("--json", o.jsonFile, "Write the results as JSON (a .json file)");
+    cmd->add_flag("--terrain-accuracy", o.terrainAccuracy,
+                  "Measure the terrain's marches (hierarchy, lei) against the fixed-step reference: missed intersections, "
+                  "HDE, IDE and time (the terrain alone; --terrain fbm unless --dem)");
     addRunOptions(*cmd, r);
 }
 
@@ -177,6 +182,10 @@ void runBench(const BenchOptions& o) {
     }
     const bool onGpu = device == "cuda";
     const int repeats = o.repeats > 0 ? o.repeats : (onGpu ? 20 : 3);
+    if (o.terrainAccuracy) {
+        runTerrainAccuracy(o, onGpu, onGpu ? gpu.name : cpuModelName(), repeats);
+        return;
+    }
 
     PreparedScene prepared = prepareScene(o.render.scene, r.strict, limit);
     if (!o.render.saveSceneFile.empty()) writeSceneFile(o.render.scene, o.render.saveSceneFile);

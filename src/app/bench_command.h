@@ -14,6 +14,7 @@ struct BenchOptions {
     std::string jsonFile;
     int repeats = 0;            ///< timed runs per measurement; 0: 20 on the GPU, 3 on the CPU
     int warmup = 3;             ///< untimed runs before them (GPU)
+    bool terrainAccuracy = false;   ///< --terrain-accuracy: the terrain's marches against the reference (app/terrain_accuracy.h)
 };
 
 /// The scene bench measures without a scene file: 1920x1080 at 1 spp, 100,000 buildings.

@@ -8,6 +8,7 @@
 #include "app/render_device.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
+#include "citygen/city_terrain.h"
 #include "cpu/cpu_renderer.h"
 #include "description/celestial_parts.h"
 #include "description/scene_checks.h"
@@ -120,6 +121,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
         meshOptions.traffic = d.geometry.traffic == "left" ? TrafficSide::Left : TrafficSide::Right;
     meshOptions.hour = hourOf(d);
     CityMesh mesh;
+    TerrainField terrain;
     CelestialLights celestial;
     {
         auto t0 = Clock::now();
@@ -130,6 +132,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
 
         t0 = Clock::now();
         mesh = meshCity(city, meshOptions);
+        terrain = cityTerrainOf(d.terrain, city.origin, mesh);
         p.secondsCitygen = secondsSince(t0);
 
         p.camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces);
@@ -140,7 +143,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
 
     auto t0 = Clock::now();
     const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
-    p.scene = buildCityScene(mesh, *wallTileSizeOf(d.geometry.wallTiles), centre);
+    p.scene = buildCityScene(mesh, *wallTileSizeOf(d.geometry.wallTiles), centre, terrain);
     p.scene.sun = celestial.sun;
     p.scene.night = celestial.night;
     p.scene.sky = skyOf(d.sky);

@@ -202,6 +202,7 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
         CLI::Option* flag = cmd.add_flag("--denoise", v.film.denoise, "Denoise the HDR film, guided by its AOVs, before it is written");
         overrides_.emplace_back(flag, [&v](SceneDescription& d) { d.film.denoise = v.film.denoise; });
     }
+    addTerrainOptions(cmd);
 }
 
 SceneDescription SceneCommandLine::resolve() const {

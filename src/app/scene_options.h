@@ -41,6 +41,8 @@ private:
     bool wanted(std::string_view name) const;
     template <typename T, typename Apply>
     CLI::Option* bind(CLI::App& cmd, const std::string& name, T& storage, const std::string& help, Apply apply);
+    /// Registers --terrain, --dem and --terrain-march (app/terrain_options.cpp).
+    void addTerrainOptions(CLI::App& cmd);
 
     SceneDescription defaults_;
     SceneDescription values_;   ///< storage of the options that take a field's own type

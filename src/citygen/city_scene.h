@@ -8,7 +8,9 @@
 namespace urbis {
 
 /// The scene of `mesh`: its triangles, walls (split into `tileSize` tiles), road segments and lamps,
-/// on the ground plane around `groundCentre` (world x, z).
-Scene buildCityScene(const CityMesh& mesh, WallTileSize tileSize = {}, Vec3f groundCentre = {});
+/// on the ground plane around `groundCentre` (world x, z), and the `terrain` where one is given
+/// (the mesh placed on it first: citygen/city_on_terrain.h; its materials among the mesh's).
+Scene buildCityScene(const CityMesh& mesh, WallTileSize tileSize = {}, Vec3f groundCentre = {},
+                     const TerrainField& terrain = {});
 
 } // namespace urbis

@@ -9,6 +9,7 @@
 #include "film/film_layers.h"
 #include "scene/sky.h"
 #include "math/vec.h"
+#include "terrain/terrain_params.h"
 
 #include <array>
 #include <cstdint>
@@ -153,6 +154,7 @@ struct SceneDescription {
     GeometryDescription geometry;
     IntegratorDescription integrator;
     FilmDescription film;
+    TerrainParams terrain;   ///< none by default: the flat ground
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "description/scene_description.h"
+#include "description/terrain_fields.h"
 
 #include <span>
 #include <utility>
@@ -111,6 +112,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.boolean("exr_float", d.film.exrFloat);
         v.boolean("denoise", d.film.denoise);
     });
+    v.object("terrain", [&] { visitTerrainFields(d.terrain, v); });
 }
 
 } // namespace urbis

@@ -402,19 +402,23 @@ SceneDescription readSceneFile(const std::string& path) {
         throw InputError(path + ": malformed JSON " + why);
     }
     SceneDescription d = sceneFromJson(parsed, path);
-    const std::filesystem::path osm(d.source.osm), folder = std::filesystem::path(path).parent_path();
-    if (!osm.empty() && osm.is_relative() && !folder.empty()) d.source.osm = (folder / osm).lexically_normal().string();
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    for (std::string* file : {&d.source.osm, &d.terrain.dem}) {
+        const std::filesystem::path p(*file);
+        if (!p.empty() && p.is_relative() && !folder.empty()) *file = (folder / p).lexically_normal().string();
+    }
     return d;
 }
 
 void writeSceneFile(const SceneDescription& description, const std::string& path) {
     SceneDescription d = description;
-    const std::filesystem::path osm(d.source.osm);
-    if (!osm.empty() && osm.is_relative()) {
+    for (std::string* file : {&d.source.osm, &d.terrain.dem}) {
+        const std::filesystem::path p(*file);
+        if (p.empty() || !p.is_relative()) continue;
         std::error_code ec;
         const std::filesystem::path folder = std::filesystem::absolute(std::filesystem::path(path)).parent_path();
-        const std::filesystem::path relative = std::filesystem::proximate(std::filesystem::absolute(osm), folder, ec);
-        if (!ec) d.source.osm = relative.string();
+        const std::filesystem::path relative = std::filesystem::proximate(std::filesystem::absolute(p), folder, ec);
+        if (!ec) *file = relative.string();
     }
     writeTextFileAtomically(path, sceneFileText(d));
 }

@@ -6,6 +6,7 @@
 
 #include "geometry/ground_intersect.h"
 #include "geometry/lamp_kind.h"
+#include "geometry/terrain_intersect.h"
 #include "geometry/triangle_kind.h"
 #include "geometry/wall_kind.h"
 
@@ -55,7 +56,11 @@ URBIS_HD inline bool intersectSlot(const SceneView& scene, const TraceRay& tr, u
                                    bool anyHit) {
     return dispatchSlot<Filter>(scene, slot, [&](auto kind, uint32_t index) {
         using Record = typename decltype(kind)::Record;
-        if (!KindIntersector<Record>::intersect(kindArray<Record>(scene)[index], tr, ray, hit, anyHit)) return false;
+        const Record& record = kindArray<Record>(scene)[index];
+        // A kind whose record points into other arrays (the terrain's samples) is handed the scene.
+        if constexpr (requires { KindIntersector<Record>::kReadsScene; }) {
+            if (!KindIntersector<Record>::intersect(scene, record, tr, ray, hit, anyHit)) return false;
+        } else if (!KindIntersector<Record>::intersect(record, tr, ray, hit, anyHit)) return false;
         hit.slot = slot;
         return true;
     });

@@ -4,6 +4,7 @@
 
 #include "accel/bvh_build.h"
 #include "scene/scene_view.h"
+#include "scene/terrain_field.h"
 #include "scene/triangle_mesh.h"
 #include "scene/wall_tiles.h"
 
@@ -47,9 +48,11 @@ struct Scene {
     /// and stores each kind's records in leaf order, the slots of each kind after those of the kinds
     /// before it (SceneView::kindEnd). A street triangle (within half a metre of the ground) may have
     /// several references, one per piece (accel/split_references.h), and is stored once per slot.
+    /// A `terrain`, where given, hangs from the root beside the grounds, its samples in terrainData.
     static Scene build(const TriangleMesh& mesh, std::vector<Material> materials,
                        const std::vector<WallRecord>& walls = {}, WallTileSize tileSize = {},
-                       const std::vector<GroundRecord>& grounds = {}, const std::vector<LampRecord>& lamps = {});
+                       const std::vector<GroundRecord>& grounds = {}, const std::vector<LampRecord>& lamps = {},
+                       const TerrainField& terrain = {});
     SceneView view() const;
     SceneMemory memory() const;
 };

@@ -1,0 +1,17 @@
+#include "citygen/city_terrain.h"
+
+#include "citygen/city_on_terrain.h"
+#include "terrain/terrain_build.h"
+
+namespace urbis {
+
+TerrainField cityTerrainOf(const TerrainParams& params, const GeoOrigin& origin, CityMesh& mesh) {
+    if (!params.enabled()) return {};
+    const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
+    TerrainField terrain = buildTerrain(params, origin, centre.x, centre.z, uint32_t(mesh.materials.size()));
+    for (const Material& m : terrainMaterials()) mesh.materials.push_back(m);
+    placeCityOnTerrain(mesh, terrain);
+    return terrain;
+}
+
+} // namespace urbis

@@ -1,0 +1,46 @@
+// The terrain from the command line: --terrain fbm renders and counts its bytes, a DEM GDAL cannot
+// open is one line and exit 1, and bench --terrain-accuracy writes its measures.
+#include "cli_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace urbis::test;
+
+TEST(TerrainCli, FbmTerrainRendersAndItsBytesAreCounted) {
+    const auto dir = scratchDir("terrain_fbm");
+    const CommandResult r = runUrbis("render --terrain fbm --buildings 20 --width 48 --height 27 --spp 1 --stats s.json", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json stats = nlohmann::json::parse(readFile(dir / "s.json"));
+    EXPECT_GT(stats["bytes_by_kind"]["terrain"].get<size_t>(), size_t(4) * 2000 * 2000);
+    EXPECT_EQ(stats["scene"]["terrain"]["kind"], "fbm");
+}
+
+TEST(TerrainCli, ADemGdalCannotOpenIsOneLineAndExitOne) {
+    const auto dir = scratchDir("terrain_bad_dem");
+    std::ofstream(dir / "bad.tif") << "not a raster";
+    const CommandResult r = runUrbis("render --dem bad.tif --buildings 5 --width 16 --height 16 --spp 1", dir);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.err, "urbis: bad.tif: GDAL cannot open it as a raster\n");
+    EXPECT_FALSE(std::filesystem::exists(dir / "urbis.png"));
+}
+
+TEST(TerrainCli, UnknownMarchIsAUsageError) {
+    const auto dir = scratchDir("terrain_bad_march");
+    EXPECT_EQ(runUrbis("render --terrain fbm --terrain-march fast --width 16 --height 16", dir).exitCode, 2);
+}
+
+TEST(TerrainCli, BenchTerrainAccuracyWritesEveryMeasure) {
+    const auto dir = scratchDir("terrain_bench");
+    const CommandResult r = runUrbis("bench --terrain-accuracy --device cpu --repeats 1 --width 64 --height 36 --json a.json", dir);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json a = nlohmann::json::parse(readFile(dir / "a.json"));
+    for (const char* march : {"hierarchy", "lei"})
+        for (const char* key : {"missed_intersections", "mean_hde_m", "max_hde_m", "mean_ide_m", "median_ms"})
+            EXPECT_TRUE(a["methods"][march].contains(key)) << march << " " << key;
+    EXPECT_EQ(a["methods"]["hierarchy"]["missed_intersections"], 0);
+    EXPECT_LT(a["methods"]["hierarchy"]["max_hde_m"].get<double>(), 0.01);
+}
