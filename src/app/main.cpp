@@ -18,7 +18,7 @@ const char* const kExitCodes = "Exit codes:\n"
                                "  1  bad input file or data (missing, unreadable, malformed, no buildings in the box)\n"
                                "  2  usage: unknown subcommand or option, bad or missing option value\n"
                                "  3  out of memory (host or GPU), including refusals before any work\n"
-                               "  4  GPU failure (--device cuda without a usable device, a failed CUDA call)\n"
+                               "  4  GPU or display failure (--device cuda without a usable device, a failed CUDA call, view without a display)\n"
                                "  5  an output file cannot be written\n"
                                "See docs/cli.md for the options, the inspect reasons and these codes.\n";
 

@@ -211,6 +211,7 @@ void ViewSession::undo() {
 }
 
 bool ViewSession::runStep(const ScriptStep& step) {
+    if (!step.load.empty()) load(step.load);
     if (!step.set.is_null()) editPatch(step.set, "script step of frame " + std::to_string(step.frame));
     if (step.mode) controller_->mode = *step.mode;
     if (step.input) cameraInput(*step.input);

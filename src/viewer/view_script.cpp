@@ -19,12 +19,13 @@ public:
         if (!node.is_object()) fail("", "expected an object");
         for (const auto& [key, value] : node.items())
             if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys))
-                fail(key, "unknown key (keys: frame, set, mode, input, undo, jump, screenshot, width, height, spp, save_scene, quit)");
+                fail(key, "unknown key (keys: frame, load, set, mode, input, undo, jump, screenshot, width, height, spp, save_scene, quit)");
     }
 
     ScriptStep read() {
         ScriptStep s;
         s.frame = uint32_t(number("frame", 0, 1e9, true).value_or(0));
+        s.load = text("load");
         if (node_.contains("set")) {
             if (!node_["set"].is_object()) fail("set", "expected an object shaped like a scene file");
             s.set = node_["set"];
@@ -52,7 +53,7 @@ public:
     }
 
 private:
-    static constexpr const char* kKeys[] = {"frame", "set", "mode", "input", "undo", "jump", "screenshot",
+    static constexpr const char* kKeys[] = {"frame", "load", "set", "mode", "input", "undo", "jump", "screenshot",
                                             "width", "height", "spp", "save_scene", "quit"};
 
     [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
@@ -64,7 +65,8 @@ private:
         const json& n = node_[key];
         if (integer ? !n.is_number_integer() : !n.is_number()) fail(key, integer ? "expected an integer" : "expected a number");
         const double x = n.get<double>();
-        if (!(x >= lo && x <= hi)) fail(key, n.dump() + " is out of range " + json(lo).dump() + ".." + json(hi).dump());
+        const auto bound = [integer](double b) { return integer ? std::to_string(int64_t(b)) : json(b).dump(); };
+        if (!(x >= lo && x <= hi)) fail(key, n.dump() + " is out of range " + bound(lo) + ".." + bound(hi));
         return x;
     }
 

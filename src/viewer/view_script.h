@@ -1,6 +1,6 @@
 // Viewer scripts (docs/viewer.md): timed camera moves and parameter changes, screenshots and saved
 // scene files, for tests, benchmarks and recorded fly-throughs. A script is a JSON object
-//   {"steps": [{"frame": 0, "set": {"film": {"exposure": 1}}},
+//   {"steps": [{"frame": 0, "load": "city.json"}, {"frame": 0, "set": {"film": {"exposure": 1}}},
 //              {"frame": 4, "input": {"keys": "W", "mouse": [40, 0], "seconds": 0.5, "mode": "fly"}},
 //              {"frame": 8, "undo": true}, {"frame": 9, "jump": [-122.397, 37.789, 300]},
 //              {"frame": 12, "screenshot": "a.png", "width": 1920, "height": 1080, "spp": 64},
@@ -23,6 +23,7 @@ namespace urbis {
 /// One step of a script; each of its parts is optional, and they run in the order listed here.
 struct ScriptStep {
     uint32_t frame = 0;                      ///< before this frame (0: the first) is rendered
+    std::string load;                        ///< a scene file made the scene; empty: none
     nlohmann::ordered_json set;              ///< part of a scene file laid over the scene (patchedScene); null: none
     std::optional<CameraMode> mode;          ///< "orbit" or "fly"
     std::optional<CameraInput> input;        ///< keys held and mouse moved (dragging) for `seconds`
