@@ -141,7 +141,7 @@ void drawViewControls(ViewSession& session, PanelState& panel) {
     ImGui::SameLine();
     if (ImGui::Button("save (Ctrl+S)")) session.save(panel.scenePath);
     ImGui::InputText("screenshot", &panel.shotPath);
-    ImGui::InputInt3("width, height, spp", panel.shotSize);
+    ImGui::InputInt3("w, h, spp", panel.shotSize);
     if (ImGui::Button("screenshot (F12)"))
         session.screenshot(panel.shotPath, uint32_t(std::max(panel.shotSize[0], 0)), uint32_t(std::max(panel.shotSize[1], 0)),
                            uint32_t(std::max(panel.shotSize[2], 0)));
@@ -161,7 +161,7 @@ void drawPanel(ViewSession& session, PanelState& panel) {
     if (ImGui::CollapsingHeader("view", ImGuiTreeNodeFlags_DefaultOpen)) drawViewControls(session, panel);
     PanelEdit edit;
     if (ImGui::CollapsingHeader("time of day", ImGuiTreeNodeFlags_DefaultOpen)) edit = drawTimeOfDay(panel.draft, session.skyLocation());
-    if (ImGui::CollapsingHeader("scene file")) {
+    if (ImGui::CollapsingHeader("scene file", ImGuiTreeNodeFlags_DefaultOpen)) {
         const PanelEdit keys = drawScenePanel(panel.draft);
         edit.changed |= keys.changed;
         edit.committed |= keys.committed;
@@ -216,6 +216,8 @@ void runViewerWindow(ViewSession& session, const ViewWindowOptions& options) {
     {
         PictureTexture texture;
         PanelState panel;
+        panel.jumpTo[0] = session.skyLocation()[0];   // a jump starts from the city's own place
+        panel.jumpTo[1] = session.skyLocation()[1];
         size_t next = 0;
         auto last = std::chrono::steady_clock::now();
         bool ending = false;
