@@ -37,9 +37,10 @@ inline std::string urbisBinary() {
     return bin && *bin ? bin : URBIS_BIN;
 }
 
-/// Runs `urbisBinary() args` in `dir`, capturing stdout and stderr.
-inline CommandResult runUrbis(const std::string& args, const std::filesystem::path& dir) {
-    std::string command = "cd '" + dir.string() + "' && '" + urbisBinary() + "' " + args + " >stdout.txt 2>stderr.txt";
+/// Runs `urbisBinary() args` in `dir`, capturing stdout and stderr; with `prefix`, through that
+/// command (xvfb-run ...).
+inline CommandResult runUrbis(const std::string& args, const std::filesystem::path& dir, const std::string& prefix = "") {
+    std::string command = "cd '" + dir.string() + "' && " + prefix + " '" + urbisBinary() + "' " + args + " >stdout.txt 2>stderr.txt";
     int status = std::system(command.c_str());
     CommandResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

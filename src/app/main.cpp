@@ -1,8 +1,9 @@
-// The urbis command: render, inspect, bench, sun.
+// The urbis command: render, inspect, bench, sun, view.
 #include "app/bench_command.h"
 #include "app/inspect_command.h"
 #include "app/render_command.h"
 #include "app/sun_command.h"
+#include "app/view_command.h"
 #include "base/input_error.h"
 
 #include <cstdio>
@@ -17,14 +18,14 @@ const char* const kExitCodes = "Exit codes:\n"
                                "  1  bad input file or data (missing, unreadable, malformed, no buildings in the box)\n"
                                "  2  usage: unknown subcommand or option, bad or missing option value\n"
                                "  3  out of memory (host or GPU), including refusals before any work\n"
-                               "  4  GPU failure (--device cuda without a usable device, a failed CUDA call)\n"
+                               "  4  GPU or display failure (--device cuda without a usable device, a failed CUDA call, view without a display)\n"
                                "  5  an output file cannot be written\n"
                                "See docs/cli.md for the options, the inspect reasons and these codes.\n";
 
 /// The parser's message, or for a first argument that is no subcommand, one naming it.
 std::string usageMessage(const CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
     if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-')
-        return std::string("unknown subcommand '") + argv[1] + "' (commands: render, inspect, bench, sun)";
+        return std::string("unknown subcommand '") + argv[1] + "' (commands: render, inspect, bench, sun, view)";
     return e.what();
 }
 
@@ -42,7 +43,8 @@ int main(int argc, char** argv) {
                  "  urbis bench --device cuda --buildings 100000 --json bench.json\n"
                  "  urbis inspect city.osm.pbf --json --ids\n"
                  "  urbis render --time 2024-06-21T21:30+02:00 --exposure 8   # the sun, moon and stars of that hour\n"
-                 "  urbis sun --location -122.4,37.79 --time 2024-06-21T20:30-07:00 --json\n"};
+                 "  urbis sun --location -122.4,37.79 --time 2024-06-21T20:30-07:00 --json\n"
+                 "  urbis view --osm city.osm.pbf --width 960 --height 540   # fly through it; save the scene from the panel\n"};
     app.footer(kExitCodes);
     app.set_version_flag("--version", "urbis " URBIS_VERSION);
     app.require_subcommand(1);
@@ -50,16 +52,19 @@ int main(int argc, char** argv) {
     urbis::InspectOptions inspect;
     urbis::BenchCommandLine bench;
     urbis::SunOptions sun;
+    urbis::ViewCommandLine view;
     urbis::addRenderCommand(app, render);
     urbis::addInspectCommand(app, inspect);
     urbis::addBenchCommand(app, bench);
     urbis::addSunCommand(app, sun);
+    urbis::addViewCommand(app, view);
     try {
         app.parse(argc, argv);
         if (app.got_subcommand("render")) urbis::runRender(render.resolve());
         if (app.got_subcommand("inspect")) urbis::runInspect(inspect);
         if (app.got_subcommand("bench")) urbis::runBench(bench.resolve());
         if (app.got_subcommand("sun")) urbis::runSun(sun);
+        if (app.got_subcommand("view")) urbis::runView(view);
     } catch (const CLI::Success& e) {
         return app.exit(e);  // --help, --help-all, --version
     } catch (const CLI::ParseError& e) {

@@ -138,6 +138,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
         p.camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces);
         checkCamera(strict, p.camera, city, mesh.cityBounds);
         celestial = celestialLightsOf(d, city.origin);
+        p.origin = city.origin;
         p.summary = summarise(city, mesh);
     }  // the city is released here, before the scene's copy of the mesh is made
 
@@ -150,6 +151,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     buildAtmosphere(p.scene);
     buildLights(p.scene);
     p.secondsBvh = secondsSince(t0);
+    p.framingPieces = std::move(mesh.framingPieces);
     return p;  // and the mesh here: the scene holds every triangle in its own order
 }
 

@@ -57,6 +57,8 @@ struct PreparedScene {
     Camera camera;
     GeometryModes geometry;
     double secondsImport = 0, secondsCitygen = 0, secondsBvh = 0;
+    GeoOrigin origin;                     ///< the city's (valid for OSM): where cameraOf places geographic cameras
+    std::vector<Bounds3f> framingPieces;  ///< what cameraOf frames when the description names no camera
 };
 
 /// Everything before the render itself, shared by `urbis render` and `urbis bench`: the city of

@@ -381,17 +381,16 @@ json sceneToJson(const SceneDescription& description) {
     return writer.root;
 }
 
-SceneDescription readSceneFile(const std::string& path) {
+nlohmann::ordered_json readJsonFile(const std::string& path, const std::string& what) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open the scene file (" + std::strerror(errno) + ")");
+    if (!in) throw InputError(path + ": cannot open the " + what + " (" + std::strerror(errno) + ")");
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot read the scene file (a folder)");
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot read the " + what + " (a folder)");
     std::stringstream text;
     text << in.rdbuf();
-    if (in.bad()) throw InputError(path + ": cannot read the scene file");
-    json parsed;
+    if (in.bad()) throw InputError(path + ": cannot read the " + what);
     try {
-        parsed = json::parse(text.str());
+        return json::parse(text.str());
     } catch (const json::parse_error& e) {
         // "[json.exception.parse_error.101] parse error at line 2, column 5: ...": the part from "at line".
         std::string why = e.what();
@@ -401,6 +400,10 @@ SceneDescription readSceneFile(const std::string& path) {
             if (c == '\n' || c == '\r') c = ' ';
         throw InputError(path + ": malformed JSON " + why);
     }
+}
+
+SceneDescription readSceneFile(const std::string& path) {
+    const json parsed = readJsonFile(path, "scene file");
     SceneDescription d = sceneFromJson(parsed, path);
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     for (std::string* file : {&d.source.osm, &d.terrain.dem}) {

@@ -28,6 +28,10 @@ std::string sceneFileText(const SceneDescription& description);
 /// file's folder.
 SceneDescription readSceneFile(const std::string& path);
 
+/// The JSON of the file at `path`; an InputError names the file (and `what` it should be: "scene
+/// file") when it is missing or unreadable, and the line and column of malformed JSON.
+nlohmann::ordered_json readJsonFile(const std::string& path, const std::string& what);
+
 /// Writes `description` to `path` through a temporary, with a relative source.osm rewritten
 /// relative to the folder of `path` (so that readSceneFile finds the same file).
 void writeSceneFile(const SceneDescription& description, const std::string& path);

@@ -5,6 +5,8 @@
 #include "film/tone_map.h"
 #include "base/input_error.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -29,10 +31,13 @@ bool filmOutputNeedsAovs(const std::string& path, uint32_t exrLayers) {
 Rgb8Image toneMap(const Film& film, float exposureEv) {
     Rgb8Image out{film.width, film.height, std::vector<uint8_t>(film.pixels() * 3)};
     const float scale = std::exp2(exposureEv);
-    for (size_t i = 0; i < film.pixels(); ++i) {
-        const Vec3f mean = meanRadiance(film, i);
-        for (int c = 0; c < 3; ++c) out.rgb[3 * i + c] = toneMapChannel(mean[c], scale);
-    }
+    // Rows in parallel: the viewer tone maps every frame (each pixel alone, so any thread count agrees).
+    tbb::parallel_for(uint32_t(0), film.height, [&](uint32_t y) {
+        for (size_t i = size_t(y) * film.width; i < size_t(y + 1) * film.width; ++i) {
+            const Vec3f mean = meanRadiance(film, i);
+            for (int c = 0; c < 3; ++c) out.rgb[3 * i + c] = toneMapChannel(mean[c], scale);
+        }
+    });
     return out;
 }
 

@@ -1,0 +1,58 @@
+// The viewer's render loop: one sample per pixel a frame added to a film on the GPU (when usable)
+// or the CPU, started over on any change, and the film shown as a picture (film/aov_display.h),
+// denoised while it is young.
+#pragma once
+
+#include "film/aov_display.h"
+#include "film/film.h"
+#include "gpu/gpu_backend.h"
+#include "integrators/render_counters.h"
+#include "scene/camera.h"
+#include "scene/render_settings.h"
+#include "scene/scene.h"
+
+#include <memory>
+#include <string>
+
+namespace urbis {
+
+class ProgressiveRenderer {
+public:
+    /// Up to this many samples per pixel the picture is denoised (where the scene asks for it): the
+    /// filter's gain is largest on a young image, and its cost is then paid on few frames.
+    static constexpr uint32_t kDenoiseUntil = 64;
+
+    /// Renders `scene` (which must outlive this) on `device` ("auto", "cpu" or "cuda", as renderOnDevice
+    /// picks; "cuda" without a usable GPU throws InputError).
+    ProgressiveRenderer(const Scene& scene, const std::string& device, bool verbose);
+    ~ProgressiveRenderer();
+
+    /// Starts a fresh film of settings' size (with AOVs `aovs`) seen by `camera`.
+    void restart(const Camera& camera, const RenderSettings& settings, bool aovs);
+    /// Adds the next sample of every pixel; counters hold its rays and seconds.
+    void addSample(RenderCounters& counters);
+    /// Samples per pixel so far.
+    uint32_t samples() const { return samples_; }
+    /// The film as accumulated (copied from the GPU first where it renders there).
+    const Film& film();
+    /// The picture of the film: `display` at `exposureEv`, denoised first with `denoise` while
+    /// samples() < kDenoiseUntil.
+    Rgb8Image picture(FilmDisplay display, float exposureEv, bool denoise);
+
+    const std::string& device() const { return device_; }   ///< "cpu" or "cuda"
+    const std::string& deviceName() const { return deviceName_; }
+    /// Device memory held (zero on the CPU).
+    size_t deviceBytes() const;
+
+private:
+    const Scene& scene_;
+    std::unique_ptr<GpuScene> gpu_;
+    std::string device_ = "cpu", deviceName_;
+    Camera camera_;
+    RenderSettings settings_;
+    Film film_;
+    uint32_t samples_ = 0;
+    bool filmCurrent_ = true;   ///< film_ holds the device film's samples
+};
+
+} // namespace urbis
