@@ -13,6 +13,7 @@
 #include "scene/camera_framing.h"
 
 #include <cmath>
+#include <initializer_list>
 
 using namespace urbis;
 
@@ -26,29 +27,43 @@ std::vector<double> blockMeans(const LinearImage& image, uint32_t side, uint32_t
     return means;
 }
 
+/// Renders `scene` with each sampler of `kinds` on both backends: the GPU's image mean within
+/// `meanTolerance` of the CPU's, and each 4 x 4 block mean above `litShare` of the image's within
+/// `blockTolerance` (a block darker than that is too noisy to compare).
+void expectBackendsAgree(const Scene& scene, const Camera& camera, RenderSettings settings,
+                         std::initializer_list<LightSamplerKind> kinds, double meanTolerance, double blockTolerance,
+                         double litShare) {
+    const std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
+    const uint32_t side = settings.width;
+    for (LightSamplerKind kind : kinds) {
+        settings.lightSampler = kind;
+        RenderCounters cpuCounters, gpuCounters;
+        const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
+        const LinearImage img = gpu->render(camera, settings, gpuCounters);
+        ASSERT_EQ(img.pixels.size(), cpu.pixels.size());
+        const std::vector<double> a = blockMeans(cpu, side, 1), b = blockMeans(img, side, 1);
+        ASSERT_GT(a[0], 1e-3) << "the image is black";
+        EXPECT_NEAR(b[0] / a[0], 1.0, meanTolerance) << "sampler " << int(kind);
+        const std::vector<double> ca = blockMeans(cpu, side, 4), cb = blockMeans(img, side, 4);
+        for (size_t i = 0; i < ca.size(); ++i) {
+            if (ca[i] > litShare * a[0]) {
+                EXPECT_NEAR(cb[i] / ca[i], 1.0, blockTolerance) << "sampler " << int(kind) << ", block " << i;
+            }
+        }
+    }
+}
+
 } // namespace
 
 TEST(GpuManyLights, BvhAndCollidersMatchTheCpu) {
     URBIS_SKIP_WITHOUT_GPU();
     Scene scene = test::manyEmitterScene(5000, 1000.0f);
     buildLights(scene);
-    const std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
     RenderSettings settings;
     settings.width = settings.height = 64;
     settings.spp = 256;
     const Camera camera = makeLookAtCamera(Vec3f{0, 40, 60}, Vec3f{0, 0, 0}, 60.0f, 1.0f);
-    for (LightSamplerKind kind : {LightSamplerKind::Bvh, LightSamplerKind::Colliders}) {
-        settings.lightSampler = kind;
-        RenderCounters cpuCounters, gpuCounters;
-        const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
-        const LinearImage img = gpu->render(camera, settings, gpuCounters);
-        ASSERT_EQ(img.pixels.size(), cpu.pixels.size());
-        const std::vector<double> a = blockMeans(cpu, 64, 1), b = blockMeans(img, 64, 1);
-        ASSERT_GT(a[0], 1e-3) << "the image is black";
-        EXPECT_NEAR(b[0] / a[0], 1.0, 0.01) << "sampler " << int(kind);
-        const std::vector<double> ca = blockMeans(cpu, 64, 4), cb = blockMeans(img, 64, 4);
-        for (size_t i = 0; i < ca.size(); ++i) EXPECT_NEAR(cb[i] / ca[i], 1.0, 0.05) << "sampler " << int(kind) << ", block " << i;
-    }
+    expectBackendsAgree(scene, camera, settings, {LightSamplerKind::Bvh, LightSamplerKind::Colliders}, 0.01, 0.05, 0.0);
 }
 
 // A wall of lit windows (one Aggregate light, 40 % of its rooms lit) over a plane at night, with the
@@ -64,25 +79,9 @@ TEST(GpuManyLights, LitWindowsMatchTheCpu) {
     Scene scene = test::nightScene(mesh, test::wallMaterials(), {test::testWall(6, 4, 0.4f, 99u)}, {});
     buildLights(scene);
     ASSERT_NE(scene.lights.firstWallLight, kNoLight);
-    const std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
     RenderSettings settings;
     settings.width = settings.height = 64;
     settings.spp = 512;
     const Camera camera = cameraFromHeading(Vec3f{0.0f, 1.7f, 14.0f}, 0.0f, -20.0f, 60.0f, 1.0f);
-    for (LightSamplerKind kind : {LightSamplerKind::Bvh, LightSamplerKind::Power}) {
-        settings.lightSampler = kind;
-        RenderCounters cpuCounters, gpuCounters;
-        const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
-        const LinearImage img = gpu->render(camera, settings, gpuCounters);
-        ASSERT_EQ(img.pixels.size(), cpu.pixels.size());
-        const std::vector<double> a = blockMeans(cpu, 64, 1), b = blockMeans(img, 64, 1);
-        ASSERT_GT(a[0], 1e-3) << "the image is black";
-        EXPECT_NEAR(b[0] / a[0], 1.0, 0.02) << "sampler " << int(kind);
-        const std::vector<double> ca = blockMeans(cpu, 64, 4), cb = blockMeans(img, 64, 4);
-        for (size_t i = 0; i < ca.size(); ++i) {
-            if (ca[i] > 1e-3 * a[0]) {
-                EXPECT_NEAR(cb[i] / ca[i], 1.0, 0.10) << "sampler " << int(kind) << ", block " << i;
-            }
-        }
-    }
+    expectBackendsAgree(scene, camera, settings, {LightSamplerKind::Bvh, LightSamplerKind::Power}, 0.02, 0.10, 1e-3);
 }
