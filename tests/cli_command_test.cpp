@@ -1,5 +1,6 @@
 // The urbis command's behaviour end to end: exit codes, outputs, memory, camera checks, messages.
 #include "cli_support.h"
+#include "film/denoise_filter.h"
 #include "film/film_output.h"
 
 #include <gtest/gtest.h>
@@ -91,7 +92,8 @@ TEST(CliCommand, AnImageTooLargeForTheMemoryIsRefusedUpFront) {
 
 // --denoise adds its buffers (guide and two signals a pixel) to what the image needs up front.
 TEST(CliCommand, TheDenoisersBuffersCountInTheImagesMemory) {
-    const size_t plain = urbis::hostFilmBytes(4096, 4096, true), denoised = urbis::hostFilmBytes(4096, 4096, true, true);
+    const size_t plain = urbis::hostFilmBytes(4096, 4096), denoised = urbis::hostFilmBytes(4096, 4096, false, true);
+    EXPECT_GE(denoised - plain, size_t(4096) * 4096 * urbis::kDenoiseBytesPerPixel);
     ASSERT_GT(denoised, plain);
     const std::string limit = std::to_string((plain + denoised) / 2);
     expectFailure("render --width 4096 --height 4096 --denoise --max-memory " + limit + " --out out.png", 3,

@@ -6,11 +6,11 @@
 #include "chi2_support.h"
 #include "citygen/window_schedule.h"
 #include "cpu/cpu_renderer.h"
-#include "facade_test_walls.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "lights/light_build.h"
 #include "lights_test_scenes.h"
+#include "night_test_scenes.h"
 #include "scene/camera_framing.h"
 #include "scene/lamp_emission.h"
 
@@ -19,6 +19,9 @@
 #include <random>
 
 using namespace urbis;
+using test::nightScene;
+using test::testWall;
+using test::wallMaterials;
 
 namespace {
 
@@ -33,42 +36,6 @@ LampRecord floatingLamp(LampShape shape, float height) {
 /// Plane material 0, the lamp's three after it.
 std::vector<Material> planeAndLampMaterials(Vec3f albedo) {
     return {Material{albedo}, Material{{0.5f, 0.5f, 0.5f}}, Material{{0.2f, 0.2f, 0.2f}}, Material{{0.8f, 0.8f, 0.8f}}};
-}
-
-Scene nightScene(const TriangleMesh& mesh, std::vector<Material> materials, const std::vector<WallRecord>& walls,
-                 const std::vector<LampRecord>& lamps) {
-    Scene scene = Scene::build(mesh, std::move(materials), walls, {}, {}, lamps);
-    scene.sun = makeSun(-10.0f, 200.0f, 0.27f, {0.0f, 0.0f, 0.0f});   // set: no ground here hides it
-    scene.sky = Sky::uniform({0, 0, 0});
-    return scene;
-}
-
-/// A facade wall of `slots` x `floors` cells, facing +z from the plane z = 0, its rooms lit with
-/// `share`; its materials from 1 (wall) and 2 (facade: glass, rooms, ...).
-WallRecord testWall(uint32_t slots, uint32_t floors, float share, uint32_t seed) {
-    WallRecord w{.origin = {-0.5f * (float(slots) * 3.0f + 1.0f), 0.0f, 0.0f}, .axisU = {1, 0, 0}, .normal = {0, 0, 1},
-                 .slotWidth = 3.0f, .floorHeight = 3.2f, .slots = uint16_t(slots), .floors = uint16_t(floors),
-                 .windowWidth = 1.4f, .windowHeight = 1.6f, .object = 1, .cellSeed = seed};
-    test::giveTestFacade(WallStyle::Punched, w);
-    w.flags = 0;
-    w.width = w.gridWidth() + 1.0f;
-    w.height = w.gridHeight() + 0.9f;
-    w.litChance = w.shopLitChance = chanceByte(share);
-    return w;
-}
-
-/// Materials of testWall: 0 a plane, 1 the wall, 2.. the facade's (FacadeMaterial order).
-std::vector<Material> wallMaterials() {
-    std::vector<Material> m{Material{{0.5f, 0.5f, 0.5f}}, Material{{0.6f, 0.55f, 0.5f}}};
-    Material glass{{0.85f, 0.9f, 0.9f}};
-    glass.kind = MaterialKind::Glass;
-    Material lit{{0.45f, 0.40f, 0.33f}};
-    lit.emission = {6.7f, 4.0f, 1.9f};   // a thousand times a city's, so that the test converges fast
-    m.push_back(glass);
-    m.push_back(Material{{0.3f, 0.3f, 0.3f}});
-    m.push_back(lit);
-    for (int i = 0; i < 4; ++i) m.push_back(Material{{0.4f, 0.4f, 0.4f}});
-    return m;
 }
 
 Vec3f imageMean(const LinearImage& image) {

@@ -238,7 +238,7 @@ void runRender(const RenderOptions& o) {
     const uint32_t layers = filmLayerMaskOf(film.layers);
     // The denoiser is guided by the AOVs: it needs the AOV pass whatever the output.
     const bool aovs = film.denoise || filmOutputNeedsAovs(film.output, layers);
-    requireMemory(hostFilmBytes(film.width, film.height, aovs, film.denoise), limit,
+    requireMemory(hostFilmBytes(film.width, film.height, filmOutputNeedsAovs(film.output, layers), film.denoise), limit,
                   "the " + std::to_string(film.width) + "x" + std::to_string(film.height) + " image");
 
     PreparedScene prepared = prepareScene(o.scene, run.strict, limit);

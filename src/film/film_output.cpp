@@ -54,7 +54,7 @@ size_t hostFilmBytes(uint32_t width, uint32_t height, bool withAovs, bool denois
     // The denoiser's buffers are freed before the file is written.
     const size_t beside = std::max({png, withAovs ? exrWriteBytes(width, height) : size_t(0),
                                     denoise ? size_t(width) * height * kDenoiseBytesPerPixel : size_t(0)});
-    return Film::bytesFor(width, height, withAovs) + beside;
+    return Film::bytesFor(width, height, withAovs || denoise) + beside;
 }
 
 } // namespace urbis

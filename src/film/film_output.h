@@ -37,9 +37,9 @@ Rgb8Image toneMap(const Film& film, float exposureEv);
 /// EXR: writeExr. Throws InputError naming the file on failure.
 void writeFilm(const Film& film, const std::string& path, const FilmOutputOptions& options);
 
-/// Host bytes of a `width` x `height` frame from render to file: the film (with its AOVs
-/// `withAovs`, which an EXR asks for), the denoiser's buffers where it runs (`denoise`) and what
-/// writing it holds beside the film.
+/// Host bytes of a `width` x `height` frame from render to file: the film (with its AOVs where an
+/// EXR writes them, `withAovs`, or the denoiser reads them, `denoise`), the denoiser's buffers and
+/// what writing the file holds beside the film.
 size_t hostFilmBytes(uint32_t width, uint32_t height, bool withAovs = false, bool denoise = false);
 
 } // namespace urbis
