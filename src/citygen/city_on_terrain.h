@@ -1,8 +1,8 @@
 // The city stood on the terrain, at build time on the host, so that the per-ray code of walls,
 // roofs, roads and lamps stays as it is: every building is raised to the highest ground under its
 // footprint (its entrance level, where its floors start) and its walls continued down to the lowest
-// (no gap on a slope); the streets' surfaces are cut into pieces no longer than the terrain's
-// samples and each vertex raised by the ground under it; lamps stand on the ground.
+// (no gap on a slope); the streets' surfaces are cut where the ground bends under them, into pieces
+// down to two sample spacings, and each vertex raised by the ground under it; lamps stand on the ground.
 #pragma once
 
 #include "citygen/city_mesher.h"
@@ -10,7 +10,7 @@
 
 namespace urbis {
 
-/// The longest edge (metres) a street triangle keeps once on the terrain: twice its sample spacing.
+/// The shortest edge (metres) a street triangle is split to on bending ground: twice its sample spacing.
 float streetEdgeOnTerrain(const TerrainField& terrain);
 
 /// Places `mesh` (built on the flat ground y = 0) on `terrain` as the file's comment says, and moves

@@ -148,7 +148,8 @@ URBIS_HD inline bool marchTerrain(const TerrainRecord& t, const float* data, con
     const float len = sqrtf(dot(ray.dir, ray.dir));
     float prev = fmaxf(t0, ray.tmin), at = prev;
     const float end = fminf(t1, ray.tmax);
-    for (uint32_t n = 0; n < (1u << 26) && at <= end; ++n) {
+    // The last step stops at the box's exit, which the surface may touch (heights raised to its floor).
+    for (uint32_t n = 0; n < (1u << 26); ++n) {
         const Vec3f p = pointAt(ray, at);
         const float dy = p.y - terrainHeight(t, data, p.x, p.z);
         if (dy <= 0.0f) {
@@ -162,8 +163,9 @@ URBIS_HD inline bool marchTerrain(const TerrainRecord& t, const float* data, con
             hitT = hi;
             return true;
         }
+        if (at >= end) break;
         prev = at;
-        at += fmaxf(step(at * len, dy), 1e-4f) / len;
+        at = fminf(at + fmaxf(step(at * len, dy), 1e-4f) / len, end);
     }
     return false;
 }
