@@ -142,7 +142,6 @@ TEST(StreetsGroundCover, StylesFollowKindAndSurface) {
     EXPECT_LT(coverStyleOf(areaOf(AreaKind::Residential, {})).priority, coverStyleOf(areaOf(AreaKind::Park, {})).priority);
     EXPECT_LT(coverStyleOf(areaOf(AreaKind::Park, {})).priority, coverStyleOf(areaOf(AreaKind::Pitch, {})).priority);
     EXPECT_LT(coverStyleOf(areaOf(AreaKind::Pitch, {})).priority, coverStyleOf(areaOf(AreaKind::Parking, {})).priority);
-    EXPECT_LT(coverStyleOf(areaOf(AreaKind::Parking, {})).priority, kWaterBedPriority);
 }
 
 TEST(StreetsGroundCover, ObjectIdsFollowThoseAlreadyTaken) {
@@ -207,11 +206,17 @@ TEST(StreetsGroundCover, EveryPileHasDistinctPlanesTopmostTheOneOfHighestPriorit
         expectPile(15, 15, {M::Park, M::Park});
         expectPile(25, 25, {M::Pitch, M::Park, M::Park});
         expectPile(45, 25, {M::PavingStones, M::Park, M::Park});
-        expectPile(25, 45, {M::Water, M::WaterBed, M::Park, M::Park});
+        // The water over the parks, its bed below the ground (docs/water.md).
         const std::vector<SurfaceHit> water = hitsDown(view, 25, 45);
+        ASSERT_EQ(water.size(), 5u) << "surface, two parks, the ground, the bed";
+        EXPECT_EQ(water[0].material, materialIndex(M::Water));
         EXPECT_NEAR(water[0].position.y, kWaterLevel, 1e-6f);
+        EXPECT_EQ(water[1].material, materialIndex(M::Park));
+        EXPECT_EQ(water[2].material, materialIndex(M::Park));
+        EXPECT_EQ(water[4].material, materialIndex(M::WaterBed));
+        EXPECT_LT(water[4].position.y, 0.0f);
         EXPECT_EQ(water[0].part, SurfacePart::Water);
-        EXPECT_EQ(water[1].part, SurfacePart::Water);
+        EXPECT_EQ(water[4].part, SurfacePart::Water);
         EXPECT_EQ(hitsDown(view, 45, 25)[0].part, SurfacePart::Sidewalk);
         EXPECT_NEAR(hitsDown(view, 45, 25)[0].position.y, kPavedAreaLevel, 1e-6f);
     }
@@ -234,9 +239,9 @@ TEST(StreetsGroundCover, WaterNeverLiesOnWater) {
     const Scene scene = sceneOf(out);
     for (const auto& [x, y] : {std::pair{50.0, 5.0}, {50.0, -5.0}, {10.0, 10.0}, {47.0, 47.0}}) {
         const std::vector<SurfaceHit> hits = hitsDown(scene.view(), x, y);
-        ASSERT_EQ(hits.size(), 3u) << x << ", " << y;   // surface, bed, ground
+        ASSERT_EQ(hits.size(), 3u) << x << ", " << y;   // surface, ground, bed below it
         EXPECT_EQ(hits[0].material, materialIndex(StreetMaterial::Water));
-        EXPECT_EQ(hits[1].material, materialIndex(StreetMaterial::WaterBed));
+        EXPECT_EQ(hits[2].material, materialIndex(StreetMaterial::WaterBed));
     }
     // Surfaces and beds: the union of the lake and the river's part outside it, twice.
     EXPECT_NEAR(meshArea(out.mesh), 2 * (100.0 * 100.0 + 20.0 * 10.0), 1e-3);

@@ -9,6 +9,7 @@
 #include "film/film_layers.h"
 #include "scene/sky.h"
 #include "math/vec.h"
+#include "streets/water_options.h"
 
 #include <array>
 #include <cstdint>
@@ -153,6 +154,7 @@ struct SceneDescription {
     GeometryDescription geometry;
     IntegratorDescription integrator;
     FilmDescription film;
+    WaterOptions water;   ///< the water's bed and waves (docs/water.md)
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.
