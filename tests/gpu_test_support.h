@@ -1,10 +1,12 @@
 // What the GPU tests share: skipping without a usable GPU, and data folders overridable by environment.
 #pragma once
 
+#include "film/image.h"
 #include "gpu/gpu_backend.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -23,6 +25,24 @@ inline std::string villageFile() {
 
 /// Downtown San Francisco, present where the shared data folder is.
 inline std::string sanFranciscoFile() { return dataDir("URBIS_SHARED_DATA", URBIS_SHARED_DATA) + "/sf_downtown_2023.osm.pbf"; }
+
+/// Per-pixel luminance of a CPU and a GPU image of one view: their means and the mean absolute difference.
+struct LuminanceParity {
+    double mean = 0;       ///< the CPU image's
+    double meanDiff = 0;
+    bool finite = true;    ///< every GPU pixel finite
+};
+
+inline LuminanceParity luminanceParity(const LinearImage& cpu, const LinearImage& gpu) {
+    LuminanceParity p;
+    for (size_t i = 0; i < cpu.pixels.size() && i < gpu.pixels.size(); ++i) {
+        const double a = luminance(cpu.pixels[i]), b = luminance(gpu.pixels[i]);
+        p.finite = p.finite && std::isfinite(b);
+        p.mean += a / double(cpu.pixels.size());
+        p.meanDiff += std::fabs(a - b) / double(cpu.pixels.size());
+    }
+    return p;
+}
 
 } // namespace urbis::test
 

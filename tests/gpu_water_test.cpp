@@ -3,42 +3,22 @@
 // absorption run on the GPU's approximate math (the precision policy, docs/architecture.md), so a
 // few paths turn the other way at a reflection: the images agree on average, not bit for bit.
 #include "gpu_test_support.h"
+#include "water_scenes.h"
 
 #include "cpu/cpu_renderer.h"
-#include "lights/light_build.h"
 #include "scene/camera_framing.h"
-#include "streets/ground_cover.h"
-#include "streets/street_materials.h"
 
-#include <cmath>
 #include <cstdio>
 
 using namespace urbis;
-
-namespace {
-
-Area squareArea(AreaKind kind, double half) {
-    Area a;
-    a.kind = kind;
-    a.polygon.outer = {{-half, -half}, {half, -half}, {half, half}, {-half, half}};
-    return a;
-}
-
-} // namespace
 
 // Metric: the mean absolute difference of per-pixel luminance under 3 % of the mean luminance, and
 // the mean luminance of the water alone within 2 % (both 64 spp; the CPU's own noise between two
 // seeds is about 1.5 % there).
 TEST(GpuWater, PondMatchesTheCpu) {
     URBIS_SKIP_WITHOUT_GPU();
-    CityModel city;
-    city.areas = {squareArea(AreaKind::Park, 200), squareArea(AreaKind::Water, 40)};
-    StreetMesh out;
-    meshGroundCover(city, {}, out);
-    Scene scene = Scene::build(out.mesh, streetMaterials(), {}, {},
-                               {GroundRecord::around(0, 0, 0, uint32_t(StreetMaterial::Grass))});
-    scene.sun = makeSun(20.0f, 200.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
-    buildLights(scene);
+    const Scene scene = test::waterScene({test::squareArea(AreaKind::Park, 200), test::squareArea(AreaKind::Water, 40)},
+                                         20.0f, 200.0f);
     RenderSettings settings;
     settings.width = 96;
     settings.height = 64;
@@ -48,17 +28,11 @@ TEST(GpuWater, PondMatchesTheCpu) {
     const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
     const LinearImage gpu = GpuScene::upload(scene)->render(camera, settings, gpuCounters);
     ASSERT_EQ(gpu.pixels.size(), cpu.pixels.size());
-    double sum = 0, sumDiff = 0;
-    for (size_t i = 0; i < cpu.pixels.size(); ++i) {
-        const double a = luminance(cpu.pixels[i]), b = luminance(gpu.pixels[i]);
-        ASSERT_TRUE(std::isfinite(b)) << "pixel " << i;
-        sum += a;
-        sumDiff += std::fabs(a - b);
-    }
-    std::printf("water parity: mean luminance %.4g, mean |diff| %.3g\n", sum / double(cpu.pixels.size()),
-                sumDiff / double(cpu.pixels.size()));
-    ASSERT_GT(sum, 0.0);
-    EXPECT_LT(sumDiff, 0.03 * sum);
+    const test::LuminanceParity parity = test::luminanceParity(cpu, gpu);
+    std::printf("water parity: mean luminance %.4g, mean |diff| %.3g\n", parity.mean, parity.meanDiff);
+    ASSERT_TRUE(parity.finite);
+    ASSERT_GT(parity.mean, 0.0);
+    EXPECT_LT(parity.meanDiff, 0.03 * parity.mean);
     // The pond fills the middle rows of the frame: compare their mean.
     double cpuWater = 0, gpuWater = 0;
     for (uint32_t y = 28; y < 40; ++y)
