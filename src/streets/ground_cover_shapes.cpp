@@ -127,6 +127,14 @@ bool triangulateNear(GEOSContextHandle_t ctx, const GEOSGeometry* g, const GEOSP
     const bool near = rectangle && GEOSPreparedDistance_r(ctx, boundary, rectangle, &distance) == 1 && distance < band;
     if (rectangle) GEOSGeom_destroy_r(ctx, rectangle);
     const double wide = std::max(box[1].x - box[0].x, box[1].y - box[0].y);
+    double area = 0;
+    if (wide <= cell && GEOSGetNumCoordinates_r(ctx, g) == 5 && GEOSArea_r(ctx, g, &area) == 1 &&
+        area == (box[1].x - box[0].x) * (box[1].y - box[0].y)) {
+        // The whole cell is in the shape: its two triangles, without a triangulation's cost.
+        out.push_back({box[0], Vec2d{box[1].x, box[0].y}, box[1]});
+        out.push_back({box[0], box[1], Vec2d{box[0].x, box[1].y}});
+        return true;
+    }
     if (!near || wide <= cell) return triangulateInPieces(ctx, g, 0, out);
     PlaneBox low = box, high = box;
     if (box[1].x - box[0].x >= box[1].y - box[0].y) low[1].x = high[0].x = 0.5 * (box[0].x + box[1].x);

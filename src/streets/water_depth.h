@@ -21,8 +21,8 @@ float waterBedDepth(double distance, const WaterOptions& options);
 /// The bed's depth at the shore, m below the ground's plane.
 inline constexpr float kMinBedDepth = 0.05f;
 
-/// Adds the bed of water `shape` to `mesh`: its triangles (trianglesNearBoundary, cells of a quarter
-/// of the shelf near the shore) at -waterBedDepth of each vertex's distance to the shore. Returns the
+/// Adds the bed of water `shape` to `mesh`: its triangles (trianglesNearBoundary, cells of half the
+/// shelf near the shore) at -waterBedDepth of each vertex's distance to the shore. Returns the
 /// triangles added (0 on failure).
 size_t meshWaterBed(const CoverShapes& shapes, size_t shape, const WaterOptions& options, TriangleInfo info,
                     TriangleMesh& mesh);
