@@ -117,6 +117,17 @@ void meshGroundCover(const CityModel& city, const StreetOptions& options, Street
             ++out.dropped["water_covered"];
         }
 
+    // Ground cover under water is cut away: the bed lies below the ground, and its light comes up
+    // through the surface, which a park's polygon under a lake would hide.
+    for (CoverItem& ground : items) {
+        if (ground.style.band != Band::Ground) continue;
+        for (size_t i = 0, w = 0; i < items.size() && ground.kept; ++i)
+            if (items[i].style.band == Band::Water && waterLeft[w++] && shapes.overlap(ground.shape, items[i].shape) &&
+                !shapes.subtract(ground.shape, items[i].shape)) {
+                ground.kept = false;
+                ++out.dropped["area_under_water"];
+            }
+    }
     stackBand(items, shapes, city, Band::Ground, kGroundCoverLevel, kWaterLevel, out);
     stackBand(items, shapes, city, Band::Paved, kPavedAreaLevel, kRoadLevel, out);
 

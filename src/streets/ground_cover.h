@@ -34,7 +34,8 @@ CoverStyle coverStyleOf(const Area& area);
 /// out.objects grows by the areas meshed. Counts `ground_cover` and `water` (areas) with their
 /// triangles; areas left out are counted in out.dropped: `area_degenerate` (no area once made
 /// valid, or coordinates beyond CoverShapes::kMaxCoordinate), `area_hole_degenerate` (a hole
-/// skipped), `water_covered` (all under smaller water), `area_too_deep` (a pile deeper than its
+/// skipped), `water_covered` (all under smaller water), `area_under_water` (ground cover all under
+/// water, which cuts itself out of the ground cover it overlaps), `area_too_deep` (a pile deeper than its
 /// band's planes), `area_triangulation_failed`.
 void meshGroundCover(const CityModel& city, const StreetOptions& options, StreetMesh& out);
 
