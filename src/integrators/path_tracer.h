@@ -1,5 +1,5 @@
-// The unidirectional path tracer: diffuse, glossy, mirror and glass surfaces; next-event
-// estimation of the scene's lights (sun, sky, emitting surfaces) combined with BSDF sampling by the
+// The unidirectional path tracer: diffuse, glossy, mirror, glass and water surfaces (with absorption
+// below the water, integrators/water.h); next-event estimation of the scene's lights (sun, sky, emitting surfaces) combined with BSDF sampling by the
 // power heuristic (Veach 1997, chapter 9); Russian roulette. Host+device; runs once per pixel sample.
 #pragma once
 
