@@ -1,6 +1,7 @@
 // The unidirectional path tracer: diffuse, glossy, mirror, glass and water surfaces (with absorption
-// below the water, integrators/water.h); next-event estimation of the scene's lights (sun, sky, emitting surfaces) combined with BSDF sampling by the
-// power heuristic (Veach 1997, chapter 9); Russian roulette. Host+device; runs once per pixel sample.
+// below the water, integrators/water.h); next-event estimation of the scene's lights (sun, sky,
+// emitting surfaces) combined with BSDF sampling by the power heuristic (Veach 1997, chapter 9);
+// Russian roulette. Host+device; runs once per pixel sample.
 #pragma once
 
 #include "geometry/scene_intersect.h"
