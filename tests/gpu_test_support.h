@@ -1,10 +1,14 @@
 // What the GPU tests share: skipping without a usable GPU, and data folders overridable by environment.
 #pragma once
 
+#include "cpu/cpu_renderer.h"
+#include "film/image.h"
 #include "gpu/gpu_backend.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -23,6 +27,49 @@ inline std::string villageFile() {
 
 /// Downtown San Francisco, present where the shared data folder is.
 inline std::string sanFranciscoFile() { return dataDir("URBIS_SHARED_DATA", URBIS_SHARED_DATA) + "/sf_downtown_2023.osm.pbf"; }
+
+/// Per-pixel luminance of a CPU and a GPU image of one view: their means and the mean absolute difference.
+struct LuminanceParity {
+    double mean = 0;       ///< the CPU image's
+    double meanDiff = 0;
+    bool finite = true;    ///< every GPU pixel finite (and, from renderOnBoth, as many as the CPU's)
+};
+
+inline LuminanceParity luminanceParity(const LinearImage& cpu, const LinearImage& gpu) {
+    LuminanceParity p;
+    for (size_t i = 0; i < cpu.pixels.size() && i < gpu.pixels.size(); ++i) {
+        const double a = luminance(cpu.pixels[i]), b = luminance(gpu.pixels[i]);
+        p.finite = p.finite && std::isfinite(b);
+        p.mean += a / double(cpu.pixels.size());
+        p.meanDiff += std::fabs(a - b) / double(cpu.pixels.size());
+    }
+    return p;
+}
+
+/// Renders `camera`'s view of `scene` on both backends, `width` x `height` at `spp` (the other settings
+/// default), into `cpu` and `gpu`; prints and returns their luminanceParity, under `label`.
+inline LuminanceParity renderOnBoth(const Scene& scene, const Camera& camera, uint32_t width, uint32_t height, uint32_t spp,
+                                    const char* label, LinearImage& cpu, LinearImage& gpu) {
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.spp = spp;
+    RenderCounters cpuCounters, gpuCounters;
+    cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
+    gpu = GpuScene::upload(scene)->render(camera, settings, gpuCounters);
+    LuminanceParity parity = luminanceParity(cpu, gpu);
+    parity.finite = parity.finite && cpu.pixels.size() == gpu.pixels.size();
+    std::printf("%s parity: mean luminance %.4g, mean |diff| %.3g\n", label, parity.mean, parity.meanDiff);
+    return parity;
+}
+
+/// The parity of two images that should agree: finite, not black, and a mean absolute difference under
+/// `tolerance` times the mean luminance.
+inline void expectParity(const LuminanceParity& parity, double tolerance) {
+    ASSERT_TRUE(parity.finite);
+    ASSERT_GT(parity.mean, 0.0);
+    EXPECT_LT(parity.meanDiff, tolerance * parity.mean);
+}
 
 } // namespace urbis::test
 

@@ -1,13 +1,12 @@
-// Water as meshGroundCover draws it, rendered under the default sky and sun: a thin glass pane with
-// Schlick's Fresnel for n = 1.33 over a dark bed. At grazing angles it mirrors the bright horizon;
-// looking straight down it reflects 2 % of the sky and shows the dark bed through its tint, so it is
-// darker than the park it lies in (the bed, not the grass under it, ends the transmitted rays).
+// Water as meshGroundCover draws it, rendered under the default sky and a sun: an interface of index
+// 1.33 with the exact Fresnel reflectance (docs/water.md). At grazing angles it mirrors the bright
+// horizon; looking straight down it reflects 2 % of the sky and shows its bed through the water, which
+// absorbs along the way: the deep middle is darker than the park around it, the shallows by the shore
+// brighter than the middle.
+#include "water_scenes.h"
+
 #include "cpu/cpu_renderer.h"
-#include "lights/light_build.h"
 #include "scene/camera_framing.h"
-#include "scene/scene.h"
-#include "streets/ground_cover.h"
-#include "streets/street_materials.h"
 
 #include <gtest/gtest.h>
 
@@ -15,26 +14,12 @@ using namespace urbis;
 
 namespace {
 
-Area squareArea(AreaKind kind, double half) {
-    Area a;
-    a.kind = kind;
-    a.polygon.outer = {{-half, -half}, {half, -half}, {half, half}, {-half, half}};
-    return a;
-}
-
-/// A 2 km square lake in a 4 km park, under the default sky and sun (scene_description.h's).
+/// A 2 km square lake in a 4 km park, its south-west corner cut off (park seen there from above),
+/// under the default sky and a sun 40 degrees up.
 Scene lakeScene() {
-    CityModel city;
-    city.areas = {squareArea(AreaKind::Park, 2000), squareArea(AreaKind::Water, 1000)};
-    city.areas[1].polygon.outer[0].x = -400;   // the south-west corner cut off: park seen there from above
-    city.areas[1].polygon.outer[0].y = -400;
-    StreetMesh out;
-    meshGroundCover(city, {}, out);
-    Scene scene = Scene::build(out.mesh, streetMaterials(), {}, {},
-                               {GroundRecord::around(0, 0, 0, uint32_t(StreetMaterial::Grass))});
-    scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
-    buildLights(scene);
-    return scene;
+    Area lake = test::squareArea(AreaKind::Water, 1000);
+    lake.polygon.outer[0] = {-400, -400};
+    return test::waterScene({test::squareArea(AreaKind::Park, 2000), lake}, 40.0f, 150.0f);
 }
 
 /// Mean luminance seen by a small camera at `position` looking along heading and pitch.
@@ -67,5 +52,17 @@ TEST(StreetsWater, GrazingViewsMirrorTheSkyAndSteepOnesAreDark) {
     EXPECT_GT(grazing, 4.0 * steep) << "Fresnel: far more of the sky is mirrored at grazing angles";
     EXPECT_GT(grazing, 0.25 * horizon);
     EXPECT_LT(steep, 0.1 * zenith) << "deep water looks dark from above";
-    EXPECT_LT(steep, 0.5 * park) << "the transmitted rays must end on the dark bed, not on the park";
+    EXPECT_LT(steep, 0.5 * park) << "the transmitted rays must end on the deep bed, not on the park";
+}
+
+// The same view straight down, 2-4 m from the north shore (the bed 1.2-1.7 m down) and over the
+// middle (4 m): the shallows show more of their bed. Measured 0.032 and 0.0235: less the 2 % of the
+// sky both reflect (0.0063), a ratio of 1.49, as Beer-Lambert's exp(0.09/m x 2 x 2.5 m) = 1.57 in
+// green says; asserted at 1.25 of the whole.
+TEST(StreetsWater, ShallowsAreBrighterThanTheDeep) {
+    const Scene scene = lakeScene();
+    const double shallow = meanLuminance(scene, {0, 10, -997}, 0.0f, -90.0f, 10.0f);
+    const double deep = meanLuminance(scene, {0, 10, 0}, 0.0f, -90.0f, 10.0f);
+    std::cout << "water straight down: shallow " << shallow << ", deep " << deep << "\n";
+    EXPECT_GT(shallow, 1.25 * deep);
 }

@@ -120,6 +120,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     if (d.geometry.traffic != "auto")
         meshOptions.traffic = d.geometry.traffic == "left" ? TrafficSide::Left : TrafficSide::Right;
     meshOptions.hour = hourOf(d);
+    meshOptions.water = d.water;
     CityMesh mesh;
     TerrainField terrain;
     CelestialLights celestial;

@@ -153,7 +153,8 @@ void addStreets(const CityModel& city, const CityMeshOptions& options, CityMesh&
     streetOptions.firstObject = uint32_t(city.buildings.size() + 1);
     streetOptions.americanMarkings = city.origin.valid && city.origin.lon < -30.0;
     streetOptions.leftHandTraffic = options.traffic.value_or(trafficSideOf(city.origin)) == TrafficSide::Left;
-    for (const Material& m : streetMaterials()) out.materials.push_back(m);
+    streetOptions.water = options.water;
+    for (const Material& m : streetMaterials(options.water)) out.materials.push_back(m);
     StreetMesh streets = meshStreets(city, streetOptions);
     out.mesh.append(streets.mesh);
     out.roadSegments = std::move(streets.roadSegments);

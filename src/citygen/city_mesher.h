@@ -12,6 +12,7 @@
 #include "scene/lamp_record.h"
 #include "scene/road_segment.h"
 #include "streets/traffic_side.h"
+#include "streets/water_options.h"
 
 #include <map>
 #include <optional>
@@ -38,6 +39,7 @@ struct CityMeshOptions {
     std::optional<TrafficSide> traffic;
     /// Bytes the triangle twin may take to build; 0: the memory available now.
     size_t memoryLimit = 0;
+    WaterOptions water;       ///< the water's bed and waves (streets/water_depth.h)
 };
 
 struct CityMesh {

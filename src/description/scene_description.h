@@ -10,6 +10,7 @@
 #include "scene/sky.h"
 #include "math/vec.h"
 #include "terrain/terrain_params.h"
+#include "streets/water_options.h"
 
 #include <array>
 #include <cstdint>
@@ -155,6 +156,7 @@ struct SceneDescription {
     IntegratorDescription integrator;
     FilmDescription film;
     TerrainParams terrain;   ///< none by default: the flat ground
+    WaterOptions water;   ///< the water's bed and waves (docs/water.md)
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.

@@ -6,10 +6,11 @@
 
 namespace urbis {
 
-/// Whether `ray` meets the ground with ray.tmin < t < ray.tmax: then t. `invDirY`: BvhRay's
-/// safeInverse(ray.dir.y). Exact (urbis.h): it decides hits.
+/// Whether `ray` meets the ground from above with ray.tmin < t < ray.tmax: then t. `invDirY`: BvhRay's
+/// safeInverse(ray.dir.y). Exact (urbis.h): it decides hits. Rays going up pass it: below the ground
+/// lie only the beds of water (docs/water.md), whose light comes up through it.
 URBIS_HD inline bool intersectGround(const GroundRecord& g, const Ray& ray, float invDirY, float& t) {
-    if (ray.dir.y == 0.0f) return false;
+    if (!(ray.dir.y < 0.0f)) return false;
     const float hitT = (g.height - ray.origin.y) * invDirY;
     if (!(hitT > ray.tmin && hitT < ray.tmax)) return false;
     const float x = exactMulAdd(hitT, ray.dir.x, ray.origin.x), z = exactMulAdd(hitT, ray.dir.z, ray.origin.z);

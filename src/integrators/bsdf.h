@@ -4,6 +4,7 @@
 #pragma once
 
 #include "math/frame.h"
+#include "math/fresnel.h"
 #include "math/sampling.h"
 #include "scene/material.h"
 
@@ -13,7 +14,9 @@ namespace urbis {
 URBIS_HD inline Vec3f reflect(Vec3f wo, Vec3f n) { return n * (2.0f * dot(wo, n)) - wo; }
 
 /// Whether the material scatters only into single directions: light sampling cannot reach it.
-URBIS_HD inline bool isSpecular(const Material& m) { return m.kind == MaterialKind::Mirror || m.kind == MaterialKind::Glass; }
+URBIS_HD inline bool isSpecular(const Material& m) {
+    return m.kind == MaterialKind::Mirror || m.kind == MaterialKind::Glass || m.kind == MaterialKind::Water;
+}
 
 /// Probability that a Glossy material samples its Phong lobe rather than its diffuse part.
 URBIS_HD inline float glossyLobeChance(const Material& m) {
@@ -70,6 +73,16 @@ URBIS_HD inline bool sampleBsdf(const Material& m, Vec3f wo, Vec3f n, float u0, 
         // proportion, so each branch's weight is 1 (reflection) or the tint (transmission).
         if (u0 < glassFresnel(m, dot(wo, n))) s = {reflect(wo, n), Vec3f{1, 1, 1}, true};
         else s = {-wo, m.albedo, true};
+        return true;
+    }
+    case MaterialKind::Water: {
+        // A smooth interface, air on the +y side of n (n faces wo): reflect or refract in proportion
+        // to the exact Fresnel reflectance; radiance refracted into a denser medium is compressed by
+        // 1 / eta^2 (pbrt-v4, 9.5.2), which the way out undoes.
+        const float eta = n.y > 0.0f ? m.ior : 1.0f / m.ior;
+        float cosT;
+        if (u0 < fresnelDielectric(dot(wo, n), eta, cosT)) s = {reflect(wo, n), Vec3f{1, 1, 1}, true};
+        else s = {refractDir(wo, n, eta, cosT), Vec3f{1, 1, 1} * (1.0f / (eta * eta)), true};
         return true;
     }
     case MaterialKind::Lambertian:

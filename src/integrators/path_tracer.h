@@ -1,11 +1,13 @@
-// The unidirectional path tracer: diffuse, glossy, mirror and glass surfaces; next-event
-// estimation of the scene's lights (sun, sky, emitting surfaces) combined with BSDF sampling by the
-// power heuristic (Veach 1997, chapter 9); Russian roulette. Host+device; runs once per pixel sample.
+// The unidirectional path tracer: diffuse, glossy, mirror, glass and water surfaces (with absorption
+// below the water, integrators/water.h); next-event estimation of the scene's lights (sun, sky,
+// emitting surfaces) combined with BSDF sampling by the power heuristic (Veach 1997, chapter 9);
+// Russian roulette. Host+device; runs once per pixel sample.
 #pragma once
 
 #include "geometry/scene_intersect.h"
 #include "integrators/bsdf.h"
 #include "integrators/camera_sample.h"
+#include "integrators/water.h"
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "lights/mis.h"
@@ -177,12 +179,14 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
     bool tracingShadow = false, pathEnds = false;
     uint32_t lightSamplesLeft = 0;
     const LightsView& lights = scene.lights;
+    WaterPath water;                // the absorption of the water the path is in
     for (uint32_t depth = 0;;) {
         const SurfaceHit hit = traceScene(scene, ray, tracingShadow);
         ++out.rays;
         if (tracingShadow) {
             if (!hit.valid()) out.radiance += shadowContribution;
         } else if (!hit.valid()) {
+            throughput *= water.transmittance(3.0e38f);   // below a water's surface nothing comes from afar
             // The sky, and the sun's disk: found by BSDF sampling, weighed against light sampling
             // (their pdfs only where the weight needs them: not for camera rays and specular bounces).
             const Vec3f dir = normalize(ray.dir);
@@ -214,6 +218,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             pathEnds = true;
         } else {
             applyAerialPerspective(scene, ray, hit.t, throughput, out.radiance);
+            throughput *= water.transmittance(hit.t * length(ray.dir));
             const Material& material = scene.materials[hit.material];
             const Vec3f dir = normalize(ray.dir);
             out.radiance += throughput * foundEmission(scene, settings, hit, material, ray, dir, bounce);
@@ -230,10 +235,14 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             // Whether BSDF sampling is a strategy here does not depend on how its sample turns out
             // (absorbed, below the surface, lost to Russian roulette): the light samples' weights must not.
             vertex.bsdfStrategy = goesOn;
+            float nextTmin = 0.0f;          // past a water's skipBelow for a ray refracted into it
             if (goesOn) {
                 float u3 = rng.draw(), u4 = rng.draw();
                 float u5 = material.kind == MaterialKind::Lambertian ? 0.0f : rng.draw();
-                goesOn = sampleBsdf(material, vertex.wo, vertex.normal, u5, u3, u4, bsdf);
+                const bool isWater = material.kind == MaterialKind::Water;
+                const Vec3f n = isWater ? waterShadingNormal(material, hit.position, hit.normal, vertex.wo) : vertex.normal;
+                goesOn = sampleBsdf(material, vertex.wo, n, u5, u3, u4, bsdf);
+                nextTmin = goesOn && isWater ? water.scattered(material, n, hit.normal, bsdf) : 0.0f;
             }
             if (goesOn) {
                 throughput *= bsdf.weight;
@@ -247,7 +256,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             lightSamplesLeft = scatters ? settings.lightSamples : 0;
             pathEnds = !goesOn;
             if (goesOn) {
-                pathRay = Ray{dot(bsdf.dir, hit.normal) > 0.0f ? vertex.origin : hit.position - offset, bsdf.dir};
+                pathRay = Ray{dot(bsdf.dir, hit.normal) > 0.0f ? vertex.origin : hit.position - offset, bsdf.dir, nextTmin};
                 ++depth;
             }
         }

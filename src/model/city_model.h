@@ -212,6 +212,7 @@ struct CityModel {
     std::string cropBoxSource;                 ///< where cropBox came from: "bbox", "header" or "data_extent"
     ReasonLog dropped;                         ///< objects not kept, by reason
     ReasonLog repaired;                        ///< objects kept after a fix (geometry made valid, a tag ignored), by reason
+    std::vector<std::string> warnings;         ///< one line each, for the user: what was repaired at some risk (a broken coastline)
     size_t buildingParts() const {
         size_t n = 0;
         for (const Building& b : buildings) n += b.isPart ? 1 : 0;

@@ -2,6 +2,7 @@
 
 #include "model/polygon_ops.h"
 #include "osm/building_parts.h"
+#include "osm/coastline.h"
 #include "model/geos_polygon.h"
 
 #include <algorithm>
@@ -147,6 +148,28 @@ public:
         out.push_back(std::move(item));
     }
 
+    /// Closes the coastline against the box into sea polygons (osm/coastline.h), water areas with
+    /// no OSM id; repairs and drops are recorded by way and said in CityModel::warnings.
+    void addCoastlines(const std::vector<RawCoastline>& coastlines) {
+        std::vector<CoastlineWay> ways;
+        for (const RawCoastline& c : coastlines)
+            for (const GeoLine& piece : c.pieces) {
+                CoastlineWay way{c.osmId, {}};
+                for (const LonLat p : piece) way.points.push_back(projection_.project(p));
+                ways.push_back(std::move(way));
+            }
+        SeaPolygons sea = seaPolygons(ways, boxMin_, boxMax_);
+        for (Polygon& polygon : sea.sea) {
+            Area a;
+            a.kind = AreaKind::Water;
+            a.polygon = std::move(polygon);
+            city_.areas.push_back(std::move(a));
+        }
+        for (const int64_t id : sea.extendedWays) record(city_.repaired, "coastline_extended_to_box", {OsmType::Way, id});
+        for (const int64_t id : sea.droppedWays) record(city_.dropped, "coastline_not_closed", {OsmType::Way, id});
+        for (std::string& w : sea.warnings) city_.warnings.push_back(std::move(w));
+    }
+
     const GeosContext& geos() const { return geos_; }
 
 private:
@@ -196,6 +219,7 @@ CityModel buildCityModel(RawFeatures&& raw, const GeoBox& box) {
     Builder builder(box, city);
     for (RawBuilding& b : raw.buildings) builder.addBuilding(b);
     for (const RawArea& a : raw.areas) builder.addArea(a);
+    builder.addCoastlines(raw.coastlines);
     for (const RawRoad& r : raw.roads) builder.addLine(r, "road", city.roads);
     for (const RawRailway& r : raw.railways) builder.addLine(r, "railway", city.railways);
     for (const RawCrossing& c : crossingsOf(raw))

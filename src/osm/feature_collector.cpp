@@ -107,6 +107,12 @@ void FeatureCollector::node(const osmium::Node& node) {
 void FeatureCollector::way(const osmium::Way& way) {
     const osmium::TagList& tags = way.tags();
     if (const std::optional<RailKind> kind = railKindOf(tags.get_value_by_key("railway"))) addRailway(way, *kind);
+    if (tags.has_tag("natural", "coastline")) {
+        RawCoastline coast{way.id(), {}};
+        piecesOf(way.nodes(), coast.pieces);
+        out_.coastlines.push_back(std::move(coast));
+        return;
+    }
     PolygonRole role = roleOf(tags);
     // A highway tagged area=yes that is no ring (unclosed, or fewer than 4 nodes) is a
     // mistagged road: kept as one. (is_closed() reads the last node, so the size comes first.)

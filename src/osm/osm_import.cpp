@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -78,6 +79,7 @@ CityModel importOsm(const std::string& path, const ImportOptions& options) {
     paintUntaggedBuildings(city);
     estimateHeights(city, options);
     city.source = std::filesystem::path(path).filename().string();
+    for (const std::string& w : city.warnings) std::fprintf(stderr, "urbis: warning: %s: %s\n", path.c_str(), w.c_str());
     return city;
 }
 

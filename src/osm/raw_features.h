@@ -64,6 +64,12 @@ struct RawLine {
 using RawRoad = RawLine<Road>;
 using RawRailway = RawLine<Railway>;
 
+/// A natural=coastline way: its pieces (split where nodes are missing), in its OSM direction.
+struct RawCoastline {
+    int64_t osmId = 0;
+    std::vector<GeoLine> pieces;
+};
+
 /// A crossing at a node, still in degrees.
 struct RawCrossing {
     Crossing attributes;  ///< osmId: the node's id
@@ -76,6 +82,7 @@ struct RawFeatures {
     std::vector<RawRoad> roads;
     std::vector<RawRailway> railways;
     std::vector<RawCrossing> crossings;        ///< crossing nodes (highway/railway/footway=crossing)
+    std::vector<RawCoastline> coastlines;      ///< natural=coastline ways (osm/coastline.h)
     /// Nodes of footway=crossing ways, each with the way's kind: a crossing where a carriageway
     /// shares the node (and no crossing node stands there already).
     std::vector<RawCrossing> crossingWayNodes;

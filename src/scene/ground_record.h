@@ -13,7 +13,8 @@ namespace urbis {
 /// the horizon seen from 2 km up, under a pixel of a 1080p frame at a 40 degree field of view.
 inline constexpr float kGroundHalfExtent = 1.0e6f;
 
-/// The rectangle x in [x0, x1], z in [z0, z1] at world height y = height, seen from both sides.
+/// The rectangle x in [x0, x1], z in [z0, z1] at world height y = height, seen from above
+/// (geometry/ground_intersect.h).
 struct GroundRecord {
     float height = 0.0f;             ///< world y, metres
     float x0 = -kGroundHalfExtent, z0 = -kGroundHalfExtent;

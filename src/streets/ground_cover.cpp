@@ -5,6 +5,7 @@
 #include "streets/street_levels.h"
 #include "streets/street_materials.h"
 #include "streets/water.h"
+#include "streets/water_depth.h"
 
 #include <algorithm>
 
@@ -21,30 +22,28 @@ struct CoverItem {
     CoverStyle style;
     double squareMetres = 0;
     bool kept = true;
-    float level = 0;       ///< the surface's height; a water's bed's, with the surface at kWaterLevel
+    float level = 0;       ///< the surface's height (water: waterSurfaceLevel, its bed below the ground)
 };
 
 /// Sorts `order` (indices into items) bottom first: by priority, then larger first, then by OSM
 /// id and by place in the city, so that the stack is the same whatever the areas' order.
 void sortBottomFirst(std::vector<size_t>& order, const std::vector<CoverItem>& items, const CityModel& city) {
-    auto priority = [&](const CoverItem& c) { return c.style.band == Band::Water ? kWaterBedPriority : c.style.priority; };
     std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
         const CoverItem &x = items[a], &y = items[b];
-        if (priority(x) != priority(y)) return priority(x) < priority(y);
+        if (x.style.priority != y.style.priority) return x.style.priority < y.style.priority;
         if (x.squareMetres != y.squareMetres) return x.squareMetres > y.squareMetres;
         const int64_t idX = city.areas[x.area].osmId, idY = city.areas[y.area].osmId;
         return idX != idY ? idX < idY : x.area < y.area;
     });
 }
 
-/// Puts the kept items of `band` (the ground's takes the water beds too) on the planes from `base`
+/// Puts the kept items of `band` on the planes from `base`
 /// below `ceiling`, piled as stackPlanes says; those whose pile is too deep are dropped.
 void stackBand(std::vector<CoverItem>& items, const CoverShapes& shapes, const CityModel& city, Band band, float base,
                float ceiling, StreetMesh& out) {
     std::vector<size_t> order;
     for (size_t i = 0; i < items.size(); ++i)
-        if (items[i].kept && (items[i].style.band == band || (band == Band::Ground && items[i].style.band == Band::Water)))
-            order.push_back(i);
+        if (items[i].kept && items[i].style.band == band) order.push_back(i);
     sortBottomFirst(order, items, city);
     std::vector<PlaneBox> boxes;
     for (const size_t i : order) boxes.push_back(shapes.box(items[i].shape));
@@ -118,6 +117,17 @@ void meshGroundCover(const CityModel& city, const StreetOptions& options, Street
             ++out.dropped["water_covered"];
         }
 
+    // Ground cover under water is cut away: the bed lies below the ground, and its light comes up
+    // through the surface, which a park's polygon under a lake would hide.
+    for (CoverItem& ground : items) {
+        if (ground.style.band != Band::Ground) continue;
+        for (size_t i = 0, w = 0; i < items.size() && ground.kept; ++i)
+            if (items[i].style.band == Band::Water && waterLeft[w++] && shapes.overlap(ground.shape, items[i].shape) &&
+                !shapes.subtract(ground.shape, items[i].shape)) {
+                ground.kept = false;
+                ++out.dropped["area_under_water"];
+            }
+    }
     stackBand(items, shapes, city, Band::Ground, kGroundCoverLevel, kWaterLevel, out);
     stackBand(items, shapes, city, Band::Paved, kPavedAreaLevel, kRoadLevel, out);
 
@@ -137,8 +147,8 @@ void meshGroundCover(const CityModel& city, const StreetOptions& options, Street
         const TriangleInfo info = infoOf(item.style.material, item.style.part);
         if (item.style.band == Band::Water) {
             const TriangleInfo bed = infoOf(StreetMaterial::WaterBed, SurfacePart::Water);
-            waterTriangles += addFlat(triangles, kWaterLevel, info, out.mesh);
-            waterTriangles += addFlat(triangles, item.level, bed, out.mesh);
+            waterTriangles += addFlat(triangles, waterSurfaceLevel(), info, out.mesh);
+            waterTriangles += meshWaterBed(shapes, item.shape, options.water, bed, out.mesh);
             ++waterAreas;
         } else {
             groundTriangles += addFlat(triangles, item.level, info, out.mesh);

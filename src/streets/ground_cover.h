@@ -10,19 +10,16 @@ namespace urbis {
 
 /// How an area kind is drawn: its material, surface part and place among the flat areas.
 struct CoverStyle {
-    /// Which plane an area lies on (street_levels.h): the ground cover's stack, the water plane (with
-    /// a dark bed in the ground cover's stack under it), or the paved areas' stack.
+    /// Which plane an area lies on (street_levels.h): the ground cover's stack, the water's surface
+    /// (with its bed below the ground, streets/water_depth.h), or the paved areas' stack.
     enum class Band { Ground, Water, Paved };
     Band band = Band::Ground;
     /// Ground band: higher lies above lower where they overlap (landuse 0, vegetation and sand 1,
-    /// pitches and playgrounds 2, parking 3; water beds kWaterBedPriority).
+    /// pitches and playgrounds 2, parking 3).
     int priority = 0;
     StreetMaterial material = StreetMaterial::ResidentialGround;
     SurfacePart part = SurfacePart::GroundCover;
 };
-
-/// Water beds lie above every ground cover they overlap.
-inline constexpr int kWaterBedPriority = 4;
 
 /// The style of `area`: by kind, and for parking and pedestrian areas by `surface` (a pedestrian
 /// area without one is paving stones).
@@ -31,13 +28,14 @@ CoverStyle coverStyleOf(const Area& area);
 /// Meshes every area of `city` into `out`: its polygon (holes kept) triangulated by GEOS, flat at
 /// its band's plane. Ground cover lies from kGroundCoverLevel up by kCoverStep: sorted by priority,
 /// then larger first (a park inside a park lies above it), each one step above the highest earlier
-/// one it overlaps. Water lies at kWaterLevel, cut where a smaller water lies on it, over a bed
-/// (StreetMaterial::WaterBed) in the ground cover's stack; paved pedestrian areas stack from
+/// one it overlaps. Water lies at waterSurfaceLevel, cut where a smaller water lies on it, over its
+/// bed (StreetMaterial::WaterBed, meshWaterBed with options.water) below the ground; paved pedestrian areas stack from
 /// kPavedAreaLevel. Object ids run from options.firstObject + out.objects in the areas' order and
 /// out.objects grows by the areas meshed. Counts `ground_cover` and `water` (areas) with their
 /// triangles; areas left out are counted in out.dropped: `area_degenerate` (no area once made
 /// valid, or coordinates beyond CoverShapes::kMaxCoordinate), `area_hole_degenerate` (a hole
-/// skipped), `water_covered` (all under smaller water), `area_too_deep` (a pile deeper than its
+/// skipped), `water_covered` (all under smaller water), `area_under_water` (ground cover all under
+/// water, which cuts itself out of the ground cover it overlaps), `area_too_deep` (a pile deeper than its
 /// band's planes), `area_triangulation_failed`.
 void meshGroundCover(const CityModel& city, const StreetOptions& options, StreetMesh& out);
 

@@ -4,6 +4,7 @@
 
 #include <geos_c.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace urbis {
@@ -117,6 +118,37 @@ bool triangulateInPieces(GEOSContextHandle_t ctx, const GEOSGeometry* g, int dep
     return true;
 }
 
+/// Triangulates the part of polygonal `g` in `box`, halving the box across its longer side while it
+/// is wider than `cell` and comes within `band` of `boundary` (prepared); false on failure.
+bool triangulateNear(GEOSContextHandle_t ctx, const GEOSGeometry* g, const GEOSPreparedGeometry* boundary,
+                     const PlaneBox& box, double cell, double band, std::vector<PlaneTriangle>& out) {
+    GEOSGeometry* rectangle = GEOSGeom_createRectangle_r(ctx, box[0].x, box[0].y, box[1].x, box[1].y);
+    double distance = 0;
+    const bool near = rectangle && GEOSPreparedDistance_r(ctx, boundary, rectangle, &distance) == 1 && distance < band;
+    if (rectangle) GEOSGeom_destroy_r(ctx, rectangle);
+    const double wide = std::max(box[1].x - box[0].x, box[1].y - box[0].y);
+    double area = 0;
+    if (wide <= cell && GEOSGetNumCoordinates_r(ctx, g) == 5 && GEOSArea_r(ctx, g, &area) == 1 &&
+        area == (box[1].x - box[0].x) * (box[1].y - box[0].y)) {
+        // The whole cell is in the shape: its two triangles, without a triangulation's cost.
+        out.push_back({box[0], Vec2d{box[1].x, box[0].y}, box[1]});
+        out.push_back({box[0], box[1], Vec2d{box[0].x, box[1].y}});
+        return true;
+    }
+    if (!near || wide <= cell) return triangulateInPieces(ctx, g, 0, out);
+    PlaneBox low = box, high = box;
+    if (box[1].x - box[0].x >= box[1].y - box[0].y) low[1].x = high[0].x = 0.5 * (box[0].x + box[1].x);
+    else low[1].y = high[0].y = 0.5 * (box[0].y + box[1].y);
+    for (const PlaneBox& cut : {low, high}) {
+        GEOSGeometry* piece = clipToBox(ctx, g, cut);
+        if (!piece) continue;
+        const bool ok = triangulateNear(ctx, piece, boundary, cut, cell, band, out);
+        GEOSGeom_destroy_r(ctx, piece);
+        if (!ok) return false;
+    }
+    return true;
+}
+
 } // namespace
 
 bool boxesOverlap(const PlaneBox& a, const PlaneBox& b) {
@@ -177,6 +209,33 @@ bool CoverShapes::subtract(size_t shape, size_t cut) {
 std::vector<PlaneTriangle> CoverShapes::triangles(size_t shape) const {
     std::vector<PlaneTriangle> out;
     if (!triangulateInPieces(handle_, shapes_[shape].geometry, 0, out)) out.clear();
+    return out;
+}
+
+std::vector<PlaneTriangle> CoverShapes::trianglesNearBoundary(size_t shape, double cell, double band) const {
+    const GEOSContextHandle_t ctx = handle_;
+    std::vector<PlaneTriangle> out;
+    GEOSGeometry* boundary = GEOSBoundary_r(ctx, shapes_[shape].geometry);
+    const GEOSPreparedGeometry* prepared = boundary ? GEOSPrepare_r(ctx, boundary) : nullptr;
+    if (!prepared || !triangulateNear(ctx, shapes_[shape].geometry, prepared, shapes_[shape].box, cell, band, out))
+        out.clear();
+    if (prepared) GEOSPreparedGeom_destroy_r(ctx, prepared);
+    if (boundary) GEOSGeom_destroy_r(ctx, boundary);
+    return out;
+}
+
+std::vector<double> CoverShapes::distancesToBoundary(size_t shape, const std::vector<Vec2d>& points) const {
+    const GEOSContextHandle_t ctx = handle_;
+    std::vector<double> out(points.size(), 0.0);
+    GEOSGeometry* boundary = GEOSBoundary_r(ctx, shapes_[shape].geometry);
+    const GEOSPreparedGeometry* prepared = boundary ? GEOSPrepare_r(ctx, boundary) : nullptr;
+    for (size_t i = 0; prepared && i < points.size(); ++i) {
+        GEOSGeometry* point = GEOSGeom_createPointFromXY_r(ctx, points[i].x, points[i].y);
+        if (point) GEOSPreparedDistance_r(ctx, prepared, point, &out[i]);
+        if (point) GEOSGeom_destroy_r(ctx, point);
+    }
+    if (prepared) GEOSPreparedGeom_destroy_r(ctx, prepared);
+    if (boundary) GEOSGeom_destroy_r(ctx, boundary);
     return out;
 }
 

@@ -55,6 +55,15 @@ public:
     /// added inside), so a coastline's polygon gives its point count in triangles. Empty on failure.
     std::vector<PlaneTriangle> triangles(size_t shape) const;
 
+    /// The shape's triangles for a surface that varies near its boundary (a water's bed): the shape
+    /// cut into pieces of at most `cell` metres across wherever it comes within `band` metres of its
+    /// boundary, in larger pieces beyond (halvings of its box, so that a piece's edges meet its
+    /// neighbours' vertices there), each triangulated as triangles() does. Empty on failure.
+    std::vector<PlaneTriangle> trianglesNearBoundary(size_t shape, double cell, double band) const;
+
+    /// Metres from each of `points` to the shape's boundary (outer ring and holes).
+    std::vector<double> distancesToBoundary(size_t shape, const std::vector<Vec2d>& points) const;
+
     /// Holes skipped by add() for having fewer than three points.
     size_t holesSkipped = 0;
 

@@ -1,5 +1,10 @@
 #include "streets/street_materials.h"
 
+#include "math/constants.h"
+#include "streets/water_depth.h"
+
+#include <cmath>
+
 namespace urbis {
 
 namespace {
@@ -13,15 +18,27 @@ Material glossy(Vec3f albedo, float specular, float exponent) {
 
 } // namespace
 
-std::vector<Material> streetMaterials() {
+Material waterMaterial(const WaterOptions& water) {
+    Material m{Vec3f{1, 1, 1}, MaterialKind::Water};
+    m.ior = 1.33f;
+    m.water.absorption = water.absorption;
+    // The wind blows from windFrom (clockwise from north) towards the opposite bearing; world x is
+    // east and z south.
+    const float towards = (water.windFrom + 180.0f) * (kPi / 180.0f);
+    m.water.windX = water.windSpeed * std::sin(towards);
+    m.water.windZ = -water.windSpeed * std::cos(towards);
+    m.water.skipBelow = waterSurfaceLevel();
+    return m;
+}
+
+std::vector<Material> streetMaterials(const WaterOptions& waterOptions) {
     // Albedos of real surfaces (linear): fresh asphalt ~0.05, worn ~0.12; concrete ~0.3; grass ~0.1-0.2;
     // road paint ~0.6-0.7 (white), ~0.45 (yellow); mown grass ~0.1-0.16 in green, about 1.6 times its red
     // (greener reads as paint once tone-mapped).
-    // Water: a thin dielectric pane (Schlick's Fresnel for n = 1.33: 2 % reflected looking down, most
-    // of the sky at grazing angles) whose straight transmission, tinted blue-green as a few metres of
-    // water tint daylight, ends on the dark bed (WaterBed) below it.
-    Material water{Vec3f{0.35f, 0.55f, 0.60f}, MaterialKind::Glass};
-    water.ior = 1.33f;
+    // Water: an interface of index 1.33 (2 % reflected looking down, most of the sky at grazing
+    // angles) whose refraction, absorbed along its path, ends on the bed (WaterBed) below it.
+    const Material water = waterMaterial(waterOptions);
+    const Vec3f bed = waterOptions.bedAlbedo;
     std::vector<Material> m = {
         diffuse(0.09f, 0.09f, 0.10f),   // Asphalt
         diffuse(0.30f, 0.29f, 0.27f),   // Concrete
@@ -58,7 +75,7 @@ std::vector<Material> streetMaterials() {
         glossy(Vec3f{0.08f, 0.09f, 0.09f}, 0.15f, 40.0f),  // LampMetal
         glossy(Vec3f{0.20f, 0.20f, 0.21f}, 0.15f, 40.0f),  // LampHousing
         diffuse(0.80f, 0.78f, 0.70f),   // LampGlass
-        diffuse(0.02f, 0.03f, 0.03f),   // WaterBed
+        diffuse(bed.x, bed.y, bed.z),   // WaterBed
     };
     static_assert(uint32_t(StreetMaterial::Count) == 36, "one material per StreetMaterial");
     return m;

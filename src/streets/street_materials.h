@@ -4,6 +4,7 @@
 
 #include "model/city_model.h"
 #include "scene/material.h"
+#include "streets/water_options.h"
 
 #include <cstdint>
 #include <vector>
@@ -20,12 +21,17 @@ enum class StreetMaterial : uint32_t {
     BridgeConcrete, Parapet,
     Ballast, RailSteel,
     LampMetal, LampHousing, LampGlass,
-    WaterBed,                     // the dark bottom under a water surface
+    WaterBed,                     // the bed under a water surface, darkened by the water's depth
     Count
 };
 
-/// The materials of StreetMaterial, in its order.
-std::vector<Material> streetMaterials();
+/// The materials of StreetMaterial, in its order; the water's and its bed's from `water`.
+std::vector<Material> streetMaterials(const WaterOptions& water = {});
+
+/// The material of a water surface: a dielectric interface of water's index (1.33) with the
+/// absorption and the wind of `water`. Its refracted rays pass the layer down to the ground's plane
+/// (skipBelow = waterSurfaceLevel's height above it) to find the bed below.
+Material waterMaterial(const WaterOptions& water);
 
 /// The StreetMaterial of a road surface (Unknown: asphalt).
 StreetMaterial materialOf(RoadSurface surface);

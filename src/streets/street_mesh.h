@@ -8,6 +8,7 @@
 #include "scene/lamp_record.h"
 #include "scene/road_segment.h"
 #include "scene/triangle_mesh.h"
+#include "streets/water_options.h"
 
 #include <cstdint>
 #include <map>
@@ -22,6 +23,7 @@ struct StreetOptions {
     uint32_t firstObject = 1;     ///< object id of the first street object (ids after the buildings')
     bool americanMarkings = false;///< yellow centre lines (the Americas); white elsewhere
     bool leftHandTraffic = false; ///< traffic keeps left (streets/traffic_side.h): lanes and stop lines mirrored
+    WaterOptions water;           ///< the water's bed and waves (streets/water_depth.h)
 };
 
 struct StreetMesh {

@@ -1,0 +1,19 @@
+// The water's parameters (the scene file's `water` object, docs/scene_files.md): its bed's depth, the
+// colour its depth gives, and the wind that makes its waves (docs/water.md).
+#pragma once
+
+#include "math/vec.h"
+
+namespace urbis {
+
+struct WaterOptions {
+    float maxDepth = 4.0f;      ///< m below the ground of the bed away from the shore
+    float shelfWidth = 15.0f;   ///< m from the shore to where the bed reaches maxDepth
+    /// 1/m, linear RGB: a river's clear but not pure water (pure water: about 0.35, 0.06, 0.01).
+    Vec3f absorption{0.45f, 0.09f, 0.06f};
+    Vec3f bedAlbedo{0.22f, 0.19f, 0.14f};   ///< the bed's silt and sand
+    float windSpeed = 4.0f;      ///< m/s, 10 m above the water
+    float windFrom = 225.0f;     ///< degrees clockwise from north that the wind blows from (225: south-west)
+};
+
+} // namespace urbis
