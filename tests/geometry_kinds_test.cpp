@@ -54,11 +54,13 @@ void expectUnitFrame(const SurfaceHit& h) {
 } // namespace
 
 TEST(PrimKinds, ListIndicesAndCosts) {
-    EXPECT_EQ(kPrimKindCount, 4u);
+    EXPECT_EQ(kPrimKindCount, 5u);
     EXPECT_EQ(kPrimKindOf<Triangle>, 0u);
     EXPECT_EQ(kPrimKindOf<WallRecord>, 1u);
     EXPECT_EQ(kPrimKindOf<GroundRecord>, 2u);
     EXPECT_EQ(kPrimKindOf<LampRecord>, 3u);
+    EXPECT_EQ(kPrimKindOf<TreeRecord>, 4u);
+    EXPECT_TRUE(kCostlyKind<kPrimKindOf<TreeRecord>>);
     EXPECT_FALSE(kCostlyKind<kPrimKindOf<Triangle>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<WallRecord>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<LampRecord>>);

@@ -119,6 +119,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     if (d.geometry.traffic != "auto")
         meshOptions.traffic = d.geometry.traffic == "left" ? TrafficSide::Left : TrafficSide::Right;
     meshOptions.hour = hourOf(d);
+    meshOptions.trees = d.trees;
     CityMesh mesh;
     CelestialLights celestial;
     {

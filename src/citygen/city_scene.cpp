@@ -4,7 +4,8 @@ namespace urbis {
 
 Scene buildCityScene(const CityMesh& mesh, WallTileSize tileSize, Vec3f groundCentre) {
     Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, tileSize,
-                               {GroundRecord::around(groundCentre.x, groundCentre.z, 0.0f, mesh.groundMaterial)}, mesh.lamps);
+                               {GroundRecord::around(groundCentre.x, groundCentre.z, 0.0f, mesh.groundMaterial)}, mesh.lamps,
+                               mesh.trees);
     scene.roadSegments = mesh.roadSegments;
     return scene;
 }

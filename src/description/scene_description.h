@@ -153,6 +153,7 @@ struct SceneDescription {
     GeometryDescription geometry;
     IntegratorDescription integrator;
     FilmDescription film;
+    TreeOptions trees;   ///< where trees are filled in, their sizes, crowns and colours (nature/tree_options.h)
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.
