@@ -158,3 +158,24 @@ TEST(TreePlacement, TreeRowsAreImportedAsTreesAlongThem) {
     const std::vector<LonLat> points = treeRowPoints({{10.0, 50.0}, {10.0, 50.001}}, 10.0);
     EXPECT_EQ(points.size(), 13u) << "111 m in pieces of at most 10 m";
 }
+
+TEST(TreePlacement, OuterForestRingsTheCityAndStaysOutOfIt) {
+    CityModel city;
+    Road road;
+    road.centerline = {{0, 0}, {200, 0}};
+    city.roads.push_back(road);
+    Building b;
+    b.footprint.outer = {{50, 20}, {150, 20}, {150, 100}, {50, 100}};
+    city.buildings.push_back(b);
+    TreeOptions options;
+    options.outerForest = 40.0f;
+    std::map<std::string, uint64_t> dropped;
+    const std::vector<Tree> trees = placeTrees(city, options, dropped);
+    // The ring: (280 x 180) - (200 x 100) = 30400 m^2, less the road's corridor where it meets the ring.
+    EXPECT_NEAR(double(trees.size()), 30400.0 * 300.0 / 10000.0, 30400.0 * 300.0 / 10000.0 * 0.2);
+    for (const Tree& t : trees)
+        EXPECT_FALSE(t.position.x > 0 && t.position.x < 200 && t.position.y > 0 && t.position.y < 100)
+            << "a tree inside the city's box at " << t.position.x << ", " << t.position.y;
+    options.outerForest = 0.0f;
+    EXPECT_TRUE(placeTrees(city, options, dropped).empty());
+}
