@@ -64,7 +64,9 @@ void expectTreesStandFree(const std::string& path, bool expectFilled) {
     std::printf("%s: %zu mapped trees in the model, %zu placed (%zu filled in); dropped: on road %llu, in building %llu, in water %llu\n",
                 path.c_str(), city.trees.size(), trees.size(), filled, (unsigned long long)dropped["tree_on_road"],
                 (unsigned long long)dropped["tree_in_building"], (unsigned long long)dropped["tree_in_water"]);
-    if (expectFilled) EXPECT_GT(filled, 0u) << path << ": its parks and woods must be filled";
+    if (expectFilled) {
+        EXPECT_GT(filled, 0u) << path << ": its parks and woods must be filled";
+    }
     // Deterministic: the same model and options give the same trees.
     std::map<std::string, uint64_t> again;
     const std::vector<Tree> second = placeTrees(city, options, again);
@@ -147,8 +149,11 @@ TEST(TreePlacement, MappedTreesOnARoadOrInABuildingAreDropped) {
 
 TEST(TreePlacement, TreeRowsAreImportedAsTreesAlongThem) {
     // A row of about 86 m (0.0012 degrees of longitude at 50 N): trees 8 m apart, both ends included.
-    const std::string body = test::node(1, 100, 500) + test::node(2, 1300, 500) +
-                             test::way(10, {1, 2}, test::tag("natural", "tree_row") + test::tag("leaf_type", "needleleaved"));
+    // The import needs a building in the box; ids in order, nodes before ways.
+    const std::string body = test::node(1, 100, 500) + test::node(2, 1300, 500) + test::node(5, 100, 100) +
+                             test::node(6, 200, 100) + test::node(7, 200, 200) +
+                             test::way(10, {1, 2}, test::tag("natural", "tree_row") + test::tag("leaf_type", "needleleaved")) +
+                             test::way(100, {5, 6, 7, 5}, test::tag("building", "yes"));
     const CityModel city = importOsm(test::writeOsm("tree_row.osm", body), ImportOptions{});
     ASSERT_EQ(city.trees.size(), 12u);
     for (const Tree& t : city.trees) {
