@@ -44,6 +44,7 @@ LAYERS = {
     "streets": 11,      # city model -> street meshes and records: roads, junctions, sidewalks, markings
                         # records, crossings, bridges, railways, ground cover, water, street lamps
     "terrain": 11,      # terrain parameters, DEM rasters (GDAL) and fBm sampled into the marched heightfield
+    "nature": 11,       # city model -> trees: placement, records, triangle twin (a sibling of streets)
     "citygen": 12,      # city model -> meshes and scene records (buildings, roofs, facades), streets joined in
     "description": 13,  # the scene description and its JSON scene files
     "cpu": 14,          # the CPU backend (TBB)

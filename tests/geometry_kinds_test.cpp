@@ -61,6 +61,8 @@ TEST(PrimKinds, ListIndicesAndCosts) {
     EXPECT_EQ(kPrimKindOf<LampRecord>, 3u);
     EXPECT_EQ(kPrimKindOf<TerrainRecord>, 4u);
     EXPECT_TRUE(kKindAtBvhRoot<kPrimKindOf<TerrainRecord>>);
+    EXPECT_EQ(kPrimKindOf<TreeRecord>, 5u);
+    EXPECT_TRUE(kCostlyKind<kPrimKindOf<TreeRecord>>);
     EXPECT_FALSE(kCostlyKind<kPrimKindOf<Triangle>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<WallRecord>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<LampRecord>>);
@@ -151,7 +153,7 @@ TEST(SceneArrays, MemoryListsEveryArrayOnce) {
         sum += bytes;
         ++arrays;
     });
-    EXPECT_EQ(arrays, 23u);   // the five kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples
+    EXPECT_EQ(arrays, 24u);   // the six kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples
     EXPECT_EQ(sum, memory.total());
     EXPECT_EQ(memory.grounds, sizeof(GroundRecord));
     EXPECT_EQ(memory.walls, scene.walls.size() * sizeof(WallRecord));

@@ -62,7 +62,7 @@ TEST(GpuTerrain, HierarchyMarchOverAnFbmLandscapeMatchesTheCpuBitForBit) {
     p.kind = "fbm";
     p.size = 4000;
     const TerrainField field = buildTerrain(p, GeoOrigin{}, 0, 0, 0);
-    const Scene scene = Scene::build(TriangleMesh{}, terrainMaterials(), {}, {}, {}, {}, field);
+    const Scene scene = Scene::build(TriangleMesh{}, terrainMaterials(), {}, {}, {}, {}, {}, field);
     expectSameHits(scene, raysOver(primBounds(field.record), 1000000));
 }
 

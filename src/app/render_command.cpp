@@ -121,6 +121,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
         meshOptions.traffic = d.geometry.traffic == "left" ? TrafficSide::Left : TrafficSide::Right;
     meshOptions.hour = hourOf(d);
     meshOptions.water = d.water;
+    meshOptions.trees = d.trees;
     CityMesh mesh;
     TerrainField terrain;
     CelestialLights celestial;

@@ -143,7 +143,7 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
     // geometry
     text_.geometry = "procedural";
     withDefault(bind(cmd, "--geometry", text_.geometry,
-                     "procedural|triangles|plain for every kind, or KIND=MODE,... (kinds: walls, roofs, lamps, buildings); "
+                     "procedural|triangles|plain for every kind, or KIND=MODE,... (kinds: walls, roofs, lamps, trees, buildings); "
                      "plain: no facades",
                      [](SceneDescription& d, const std::string& text) { d.geometry.modes = parseGeometryModes(text); }));
     withDefault(bind(cmd, "--wall-tiles", v.geometry.wallTiles,
@@ -160,7 +160,7 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
         traffic->check(CLI::IsMember(std::vector<std::string>(std::begin(kTrafficSides), std::end(kTrafficSides))))
             ->capture_default_str();
     if (wanted("--no-streets")) {
-        CLI::Option* flag = cmd.add_flag("--no-streets", noStreets_, "Buildings on the bare ground: no roads, sidewalks, ground cover, water or lamps");
+        CLI::Option* flag = cmd.add_flag("--no-streets", noStreets_, "Buildings on the bare ground: no roads, sidewalks, ground cover, water, lamps or trees");
         overrides_.emplace_back(flag, [](SceneDescription& d) { d.geometry.streets = false; });
     }
 

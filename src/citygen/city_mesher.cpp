@@ -1,6 +1,7 @@
 #include "citygen/city_mesher.h"
 
 #include "citygen/building_mesher.h"
+#include "citygen/city_trees.h"
 #include "citygen/facade_mesher.h"
 #include "citygen/window_schedule.h"
 #include "base/input_error.h"
@@ -145,8 +146,8 @@ void meshWallTwins(const CityMeshOptions& options, CityMesh& out) {
 }
 
 /// Joins the streets (streets/street_mesher.h) to the buildings: their materials after the buildings',
-/// their objects after the buildings' ids.
-void addStreets(const CityModel& city, const CityMeshOptions& options, CityMesh& out) {
+/// their objects after the buildings' ids. Returns the first object id after the streets'.
+uint32_t addStreets(const CityModel& city, const CityMeshOptions& options, CityMesh& out) {
     StreetOptions streetOptions;
     streetOptions.lamps = options.geometry.lamps;
     streetOptions.firstMaterial = uint32_t(out.materials.size());
@@ -162,6 +163,7 @@ void addStreets(const CityModel& city, const CityMeshOptions& options, CityMesh&
     for (const auto& [kind, n] : streets.trianglesByKind) out.trianglesByKind[kind] += n;
     for (const auto& [reason, n] : streets.dropped) out.dropped[reason] += n;
     out.streetCounts = std::move(streets.counts);
+    return streetOptions.firstObject + streets.objects;
 }
 
 } // namespace
@@ -217,7 +219,7 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     out.groundMaterial = groundMaterial;
     out.trianglesByKind = {{"walls", walls}, {"roofs", roofs}};
     if (options.geometry.walls == Representation::Triangles) meshWallTwins(options, out);
-    if (options.streets) addStreets(city, options, out);
+    if (options.streets) addCityTrees(city, options, addStreets(city, options, out), out);
     return out;
 }
 

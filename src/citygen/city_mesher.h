@@ -11,6 +11,8 @@
 #include "scene/material.h"
 #include "scene/lamp_record.h"
 #include "scene/road_segment.h"
+#include "nature/tree_options.h"
+#include "scene/tree_record.h"
 #include "streets/traffic_side.h"
 #include "streets/water_options.h"
 
@@ -40,6 +42,7 @@ struct CityMeshOptions {
     /// Bytes the triangle twin may take to build; 0: the memory available now.
     size_t memoryLimit = 0;
     WaterOptions water;       ///< the water's bed and waves (streets/water_depth.h)
+    TreeOptions trees;        ///< placed with the streets (none with streets = false)
 };
 
 struct CityMesh {
@@ -59,6 +62,7 @@ struct CityMesh {
     std::map<std::string, uint64_t> dropped;
     uint64_t holesDropped = 0;                 ///< footprint holes the cleaning dropped (citygen/footprint_cleaning.h)
     std::map<std::string, uint64_t> roofFallbacks;  ///< roofs meshed as a simpler shape (unknown shape -> flat, ...), by reason
+    std::vector<TreeRecord> trees;             ///< sphere-traced trees (empty with trees=triangles)
 };
 
 /// Meshes the whole city (object id of building i is i + 1; 0 is the ground) in parallel; the

@@ -157,6 +157,7 @@ struct SceneDescription {
     FilmDescription film;
     TerrainParams terrain;   ///< none by default: the flat ground
     WaterOptions water;   ///< the water's bed and waves (docs/water.md)
+    TreeOptions trees;   ///< where trees are filled in, their sizes, crowns and colours (nature/tree_options.h)
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.

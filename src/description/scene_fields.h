@@ -92,6 +92,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.text("wall_tiles", d.geometry.wallTiles);
         v.boolean("streets", d.geometry.streets);
         v.choice("traffic", d.geometry.traffic, std::span(kTrafficSides));
+        v.enumeration("trees", d.geometry.modes.trees, kRepresentationNames);
     });
     v.object("integrator", [&] {
         v.choice("kind", d.integrator.kind, std::span(kIntegratorKinds));
@@ -120,6 +121,24 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.vec3("bed_albedo", d.water.bedAlbedo, 0.0f, 1.0f);
         v.number("wind_speed", d.water.windSpeed, 0.0f, 60.0f);
         v.number("wind_from", d.water.windFrom, -360.0f, 360.0f);
+    v.object("trees", [&] {
+        v.boolean("enabled", d.trees.enabled);
+        v.number("seed", d.trees.seed, 0u, UINT32_MAX);
+        v.number("forest_density", d.trees.forestDensity, 0.0f, 5000.0f);
+        v.number("park_density", d.trees.parkDensity, 0.0f, 5000.0f);
+        v.number("scrub_density", d.trees.scrubDensity, 0.0f, 5000.0f);
+        v.number("outer_forest", d.trees.outerForest, 0.0f, 20000.0f);
+        v.number("clearance", d.trees.clearance, 0.0f, 50.0f);
+        v.number("default_height", d.trees.defaultHeight, 1.0f, 150.0f);
+        v.number("size_variation", d.trees.sizeVariation, 0.0f, 0.9f);
+        v.number("conifer_share", d.trees.coniferShare, 0.0f, 1.0f);
+        v.number("roughness", d.trees.roughness, 0.0f, 1.0f);
+        v.number("lumps", d.trees.lumps, 0.1f, 10.0f);
+        v.choice("season", d.trees.season, std::span(kTreeSeasons));
+        v.vec3("bark_albedo", d.trees.barkAlbedo, 0.0f, 1.0f);
+        v.vec3("leaf_albedo", d.trees.leafAlbedo, 0.0f, 1.0f);
+        v.vec3("needle_albedo", d.trees.needleAlbedo, 0.0f, 1.0f);
+        v.vec3("autumn_albedo", d.trees.autumnAlbedo, 0.0f, 1.0f);
     });
 }
 

@@ -7,6 +7,7 @@
 #include "geometry/ground_intersect.h"
 #include "geometry/lamp_kind.h"
 #include "geometry/terrain_intersect.h"
+#include "geometry/tree_kind.h"
 #include "geometry/triangle_kind.h"
 #include "geometry/wall_kind.h"
 

@@ -164,11 +164,21 @@ struct Lamp {
     float colourTemperature = 0;  ///< K, from `light:colour` or the lamp's method; 0 if unknown
 };
 
+/// `leaf_type` of a tree or a wood.
+enum class LeafType : uint8_t { Unknown, Broadleaved, Needleleaved };
+/// `leaf_cycle` of a tree or a wood.
+enum class LeafCycle : uint8_t { Unknown, Deciduous, Evergreen };
+
 struct Tree {
     int64_t osmId = 0;
     Vec2d position;
     float height = 8.0f;
     float crownDiameter = 5.0f;
+    float circumference = 0;          ///< m, of the trunk (`circumference`); 0: untagged (by height)
+    bool heightTagged = false;        ///< `height` (else a seeded variation of `height`)
+    bool crownTagged = false;         ///< `diameter_crown` (else by height and shape)
+    LeafType leafType = LeafType::Unknown;
+    LeafCycle leafCycle = LeafCycle::Unknown;
 };
 
 /// What covers an area of the ground, by the tag that says so (ground_cover in streets/ draws them).
@@ -183,6 +193,7 @@ struct Area {
     RoadSurface surface = RoadSurface::Unknown;  ///< `surface` of paved areas (pedestrian, parking)
     int layer = 0;
     Polygon polygon;
+    LeafType leafType = LeafType::Unknown;   ///< `leaf_type` of a wood, forest or park (the trees filled in)
 };
 
 /// A longitude/latitude box in degrees, WGS84.

@@ -7,6 +7,7 @@
 #include "osm/railway_tags.h"
 #include "osm/street_tags.h"
 #include "osm/tag_parsing.h"
+#include "osm/tree_rows.h"
 #include "osm/underground_tags.h"
 
 #include <algorithm>
@@ -106,6 +107,7 @@ void FeatureCollector::node(const osmium::Node& node) {
 
 void FeatureCollector::way(const osmium::Way& way) {
     const osmium::TagList& tags = way.tags();
+    if (tags.has_tag("natural", "tree_row")) addTreeRow(way);
     if (const std::optional<RailKind> kind = railKindOf(tags.get_value_by_key("railway"))) addRailway(way, *kind);
     if (tags.has_tag("natural", "coastline")) {
         RawCoastline coast{way.id(), {}};
@@ -150,6 +152,15 @@ void FeatureCollector::addRoad(const osmium::Way& way) {
     out_.roads.push_back(std::move(road));
 }
 
+void FeatureCollector::addTreeRow(const osmium::Way& way) {
+    GeoLine line;
+    if (!locationsOf(way.nodes(), line)) return;
+    // The row's own tags size its trees; they stand a crown apart (8 m when untagged).
+    const Tree tree = treeFromTags(lookupIn(way.tags()), way.id());
+    for (const LonLat& p : treeRowPoints(line, tree.crownTagged ? std::max(2.0f, tree.crownDiameter) : 8.0))
+        out_.trees.emplace_back(tree, p);
+}
+
 void FeatureCollector::addRailway(const osmium::Way& way, RailKind kind) {
     RawRailway railway;
     railway.attributes = railwayFromTags(lookupIn(way.tags()), kind, way.id(), railway.tagIssues);
@@ -187,6 +198,7 @@ void FeatureCollector::addPolygonFeature(PolygonRole role, const osmium::TagList
         a.attributes.kind = *areaKindFromTags(lookup);
         if (const char* surface = lookup("surface")) a.attributes.surface = parseRoadSurface(surface);
         a.attributes.layer = levelFromTags(lookup, "area_bad_layer_tag", a.tagIssues).layer;
+        a.attributes.leafType = leafTypeFromTags(lookup);
         out_.areas.push_back(std::move(a));
         return;
     }

@@ -54,6 +54,8 @@ private:
     /// carriageway its node ids.
     void addRoad(const osmium::Way& way);
     void addRailway(const osmium::Way& way, RailKind kind);
+    /// The trees of a natural=tree_row way (osm/tree_rows.h), each with the row's tags and id.
+    void addTreeRow(const osmium::Way& way);
     void addPolygonFeature(PolygonRole role, const osmium::TagList& tags, int64_t osmId,
                            std::vector<GeoPolygon> polygons, const char* problem);
 

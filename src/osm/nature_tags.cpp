@@ -59,11 +59,22 @@ Tree treeFromTags(const TagLookup& tag, int64_t osmId) {
     tree.osmId = osmId;
     if (const char* height = tag("height"))
         if (const std::optional<double> h = parseLength(height); h && *h > 0.5 && *h < 150.0)
-            tree.height = float(*h);
+            tree.height = float(*h), tree.heightTagged = true;
     if (const char* crown = tag("diameter_crown"))
         if (const std::optional<double> d = parseLength(crown); d && *d > 0.2 && *d < 80.0)
-            tree.crownDiameter = float(*d);
+            tree.crownDiameter = float(*d), tree.crownTagged = true;
+    if (const char* girth = tag("circumference"))
+        if (const std::optional<double> c = parseLength(girth); c && *c > 0.05 && *c < 30.0) tree.circumference = float(*c);
+    tree.leafType = leafTypeFromTags(tag);
+    if (is(tag("leaf_cycle"), "deciduous") || is(tag("leaf_cycle"), "semi_deciduous")) tree.leafCycle = LeafCycle::Deciduous;
+    if (is(tag("leaf_cycle"), "evergreen") || is(tag("leaf_cycle"), "semi_evergreen")) tree.leafCycle = LeafCycle::Evergreen;
     return tree;
+}
+
+LeafType leafTypeFromTags(const TagLookup& tag) {
+    if (is(tag("leaf_type"), "broadleaved")) return LeafType::Broadleaved;
+    if (is(tag("leaf_type"), "needleleaved")) return LeafType::Needleleaved;
+    return LeafType::Unknown;
 }
 
 std::optional<AreaKind> areaKindFromTags(const TagLookup& tag) {

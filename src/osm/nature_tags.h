@@ -9,9 +9,13 @@
 
 namespace urbis {
 
-/// Tree attributes (all but position) of a `natural=tree` node: `height` and
-/// `diameter_crown` (with units) over the defaults.
+/// Tree attributes (all but position) of a `natural=tree` node or a `natural=tree_row` way:
+/// `height`, `diameter_crown` and `circumference` (with units) over the defaults, `leaf_type` and
+/// `leaf_cycle` (semi_deciduous as deciduous, semi_evergreen as evergreen).
 Tree treeFromTags(const TagLookup& tag, int64_t osmId);
+
+/// `leaf_type`: broadleaved, needleleaved (mixed, leafless and anything else: Unknown).
+LeafType leafTypeFromTags(const TagLookup& tag);
 
 /// The kind of ground a closed way or multipolygon covers; nullopt for none. Tags are tried in
 /// this order, and the first that names a kind wins (docs/streets.md, "Street tags"):

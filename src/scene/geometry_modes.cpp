@@ -21,7 +21,7 @@ GeometryModes parseGeometryModes(const std::string& text) {
     GeometryModes modes;
     if (text.find('=') == std::string::npos) {
         const Representation r = parseRepresentation(text, text);
-        return GeometryModes{r, r, r};
+        return GeometryModes{r, r, r, r};
     }
     std::stringstream list(text);
     std::string item;
@@ -33,8 +33,9 @@ GeometryModes parseGeometryModes(const std::string& text) {
         if (kind == "walls") modes.walls = r;
         else if (kind == "roofs") modes.roofs = r;
         else if (kind == "lamps") modes.lamps = r;
+        else if (kind == "trees") modes.trees = r;
         else if (kind == "buildings") modes.walls = modes.roofs = r;
-        else throw InputError("--geometry: unknown kind '" + kind + "' (kinds: walls, roofs, lamps, buildings)", FailureKind::Usage);
+        else throw InputError("--geometry: unknown kind '" + kind + "' (kinds: walls, roofs, lamps, trees, buildings)", FailureKind::Usage);
     }
     return modes;
 }

@@ -16,11 +16,12 @@ struct GeometryModes {
     Representation walls = Representation::Procedural;   ///< facades
     Representation roofs = Representation::Procedural;
     Representation lamps = Representation::Procedural;   ///< street lamps: analytic, or their triangle twin (never plain)
+    Representation trees = Representation::Procedural;   ///< trees: sphere traced, or their triangle twin (never plain)
 };
 
 /// Parses `--geometry`: "procedural", "triangles" or "plain" for every kind, or a list of KIND=MODE
-/// ("walls=triangles,roofs=procedural,lamps=triangles"; kinds: walls, roofs, lamps; also
-/// buildings=MODE for walls and roofs) over the procedural default; plain lamps are their triangles. Throws InputError naming the option on anything else.
+/// ("walls=triangles,roofs=procedural,lamps=triangles"; kinds: walls, roofs, lamps, trees; also
+/// buildings=MODE for walls and roofs) over the procedural default; plain lamps and trees are their triangles. Throws InputError naming the option on anything else.
 GeometryModes parseGeometryModes(const std::string& text);
 
 /// "procedural", "triangles" or "plain".

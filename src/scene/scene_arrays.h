@@ -35,7 +35,8 @@
     X(Vec3f, multiScatteringLut, "multiscattering_lut") \
     X(Vec3f, skyViewLut, "sky_view_lut")               \
     X(TerrainRecord, terrains, "terrain_records")      \
-    X(float, terrainData, "terrain")
+    X(float, terrainData, "terrain")                  \
+    X(TreeRecord, trees, "trees")
 
 namespace urbis {
 
@@ -56,9 +57,10 @@ URBIS_HD auto& kindArray(auto& arrays) {
     else if constexpr (std::is_same_v<Record, WallRecord>) return arrays.walls;
     else if constexpr (std::is_same_v<Record, GroundRecord>) return arrays.grounds;
     else if constexpr (std::is_same_v<Record, LampRecord>) return arrays.lamps;
+    else if constexpr (std::is_same_v<Record, TerrainRecord>) return arrays.terrains;
     else {
-        static_assert(std::is_same_v<Record, TerrainRecord>, "a kind of PrimKinds without its array here");
-        return arrays.terrains;
+        static_assert(std::is_same_v<Record, TreeRecord>, "a kind of PrimKinds without its array here");
+        return arrays.trees;
     }
 }
 

@@ -31,6 +31,8 @@ enum class SurfacePart : uint8_t {
     LampPole,     ///< a street lamp's pole and arm
     LampHead,
     LampGlass,    ///< the lamp's emitting glass
+    TreeTrunk,    ///< a tree's trunk and branches
+    TreeCrown,    ///< a tree's leaves or needles
     Count
 };
 
