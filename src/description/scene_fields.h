@@ -111,6 +111,13 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.boolean("exr_float", d.film.exrFloat);
         v.boolean("denoise", d.film.denoise);
     });
+    v.object("photons", [&] {
+        v.number("per_pass", d.photons.perPass, 1u, 1u << 26);
+        v.number("radius", d.photons.radius, 1e-3f, 1e3f);
+        v.number("alpha", d.photons.alpha, 0.01f, 1.0f);
+        v.number("texel", d.photons.texel, 0.01f, 100.0f);
+        v.number("level_distance", d.photons.levelDistance, 0.1f, 1e5f);
+    });
 }
 
 } // namespace urbis
