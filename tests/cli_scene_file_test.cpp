@@ -67,7 +67,7 @@ TEST(CliSceneFile, SavedSceneOfTheDefaultCommandHasEveryKey) {
     }
     for (const char* section : {"source", "camera", "sun", "astronomy", "sky", "materials", "geometry", "integrator", "film"})
         EXPECT_TRUE(scene.contains(section)) << section;
-    EXPECT_EQ(keys, 60u) << "every key with its value (docs/scene_files.md)";
+    EXPECT_EQ(keys, 66u) << "every key with its value (docs/scene_files.md)";
     EXPECT_EQ(scene["integrator"]["rr_survival"], 0.95);
     EXPECT_EQ(scene["camera"]["position"], nullptr);
 }

@@ -27,8 +27,8 @@ inline void addBox(TriangleMesh& mesh, Vec3f lo, Vec3f hi, uint32_t material, ui
     if (bottom) addQuad(mesh, p[0], p[3], p[2], p[1], material, object);
 }
 
-/// A street canyon along z: a street 16 m wide between two rows of four buildings (20 x 20 m
-/// footprints, 2 m apart, 18 to 30 m high), on a ground plane of side 400 m (object 0), under a sun
+/// A street canyon along z: a street 16 m wide between two rows of four terraced buildings (20 x 22 m
+/// footprints, wall to wall, 18 to 30 m high), on a ground plane of side 400 m (object 0), under a sun
 /// 35 degrees up across the street and a uniform sky. Materials: ground 0, walls 1 (light, so the
 /// indirect light is a large share).
 inline Scene streetCanyonScene() {
@@ -39,7 +39,7 @@ inline Scene streetCanyonScene() {
         for (int k = 0; k < 4; ++k) {
             const float x0 = side < 0 ? -28.0f : 8.0f, z0 = -44.0f + 22.0f * float(k);
             const float h = 18.0f + 4.0f * float((k * 3 + (side > 0)) % 4);
-            addBox(mesh, {x0, 0, z0}, {x0 + 20.0f, h, z0 + 20.0f}, 1, object++);
+            addBox(mesh, {x0, 0, z0}, {x0 + 20.0f, h, z0 + 22.0f}, 1, object++);
         }
     Scene scene = Scene::build(mesh, {Material{Vec3f{0.4f, 0.4f, 0.4f}}, Material{Vec3f{0.7f, 0.65f, 0.6f}}});
     scene.sun = makeSun(35.0f, 100.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <utility>
 
 namespace urbis {
 
@@ -144,7 +145,7 @@ struct GpuPhotonPasses::Impl {
         URBIS_CUDA_CHECK(cudaMemset(grown.data(), 0, grown.bytes()));
         if (texels.size())
             URBIS_CUDA_CHECK(cudaMemcpy(grown.data(), texels.data(), texels.bytes(), cudaMemcpyDeviceToDevice));
-        texels.swap(grown);
+        std::swap(texels, grown);
     }
 };
 

@@ -1,8 +1,10 @@
-// Blocks of buildings for the photon buffers (host): buildings whose footprints lie within a street's
-// gap of each other are clustered into one block, up to a block's largest extent, and each cell of a
-// ground grid is given to the nearest block, so that every ground point and every building surface
+// Blocks of buildings for the photon buffers (host): buildings whose footprints touch (terraced rows,
+// a city block's walls) are clustered into one block, up to a block's largest extent, and each cell of
+// a ground grid is given to the nearest block, so that every ground point and every building surface
 // has one block's buffers (Argudo, Andujar and Patow cluster by the street network; urbis by
-// footprints, which also serves scenes without streets). docs/photons.md § Blocks.
+// footprints, which also serves scenes without streets). Buildings a gap apart stay apart: the walls
+// across a gap face the same way as the block's front at the same angle from its axis, and two
+// surfaces on one texel would sum their light. docs/photons.md § Blocks.
 #pragma once
 
 #include "scene/photon_view.h"
@@ -13,7 +15,7 @@
 namespace urbis {
 
 struct PhotonBlockOptions {
-    float gap = 4.0f;            ///< metres: buildings nearer than this (footprint boxes) share a block
+    float gap = 0.5f;            ///< metres: buildings nearer than this (footprint boxes) share a block
     float maxExtent = 160.0f;    ///< metres: a block grows no wider or deeper than this
     float groundReach = 40.0f;   ///< metres: ground further than this from every block has no buffer
     float groundCell = 4.0f;     ///< metres: the ground grid's cell (larger for large cities: at most 2048 a side)

@@ -61,7 +61,8 @@ URBIS_HD inline BufferPoint projectOntoBlock(const PhotonBlock& block, PhotonLay
     }
     // Cylindrical about the block's vertical axis: angle around, height up. A texel spans
     // 2 pi rho / facadeU along a circle of radius rho; a facade at angle phi to the radial direction
-    // covers 1 / |cos phi| of that (clamped: a facade seen edge-on from the axis would take no texel).
+    // covers 1 / |cos phi| of that (clamped: a facade seen edge-on from the axis would take no texel;
+    // a texel there stretches ten texels along the facade).
     const float dx = p.x - block.centre.x, dz = p.z - block.centre.y;
     const float rho = fmaxf(sqrtf(dx * dx + dz * dz), 1.0f);
     float u = atan2f(dz, dx) * (0.5f / kPi) + 0.5f;
@@ -73,18 +74,17 @@ URBIS_HD inline BufferPoint projectOntoBlock(const PhotonBlock& block, PhotonLay
     out.y = (p.y - block.lo.y) / height * float(block.facadeV);
     out.wrapsX = true;
     const float radial = fabsf(n.x * dx + n.z * dz) / rho;
-    out.texelArea = 2.0f * kPi * rho * height / (float(block.facadeU) * float(block.facadeV) * fmaxf(radial, 0.25f));
+    out.texelArea = 2.0f * kPi * rho * height / (float(block.facadeU) * float(block.facadeV) * fmaxf(radial, 0.1f));
     return out;
 }
 
-/// The layer of a surface point of `object` with unit normal `n` at `p` relative to its block: roofs
-/// and the ground orthographic (normals up), other building surfaces cylindrical, facing out of the
-/// block's centre or into it.
-URBIS_HD inline PhotonLayer photonLayerOf(const PhotonBlock& block, Vec3f p, Vec3f n, uint32_t object) {
+/// The layer of a surface point of `object` with unit normal `n`: roofs and the ground orthographic
+/// (normals up), other building surfaces cylindrical, by the way they face.
+URBIS_HD inline PhotonLayer photonLayerOf(Vec3f n, uint32_t object) {
     if (object == 0) return PhotonLayer::Ground;
     if (n.y > 0.5f) return PhotonLayer::Roof;
-    const float outward = n.x * (p.x - block.centre.x) + n.z * (p.z - block.centre.y);
-    return outward >= 0.0f ? PhotonLayer::FacadeOut : PhotonLayer::FacadeIn;
+    if (fabsf(n.x) >= fabsf(n.z)) return n.x >= 0.0f ? PhotonLayer::FacadeEast : PhotonLayer::FacadeWest;
+    return n.z >= 0.0f ? PhotonLayer::FacadeSouth : PhotonLayer::FacadeNorth;
 }
 
 /// Where the surface point (`p`, unit normal `n`, `object`) lies in the buffers. False where no block
@@ -93,7 +93,7 @@ URBIS_HD inline bool bufferPointOf(const PhotonBuffersView& b, Vec3f p, Vec3f n,
     const uint32_t id = photonBlockOf(b, p, object);
     if (id == kNoBlock || b.blocks[id].texelOffset == kNoTexels) return false;
     const PhotonBlock& block = b.blocks[id];
-    out = projectOntoBlock(block, photonLayerOf(block, p, n, object), p, n);
+    out = projectOntoBlock(block, photonLayerOf(n, object), p, n);
     out.block = id;
     return true;
 }

@@ -31,10 +31,11 @@ struct PhotonGridView {
 inline constexpr uint32_t kNoBlock = 0xffffffffu;
 inline constexpr uint32_t kNoTexels = 0xffffffffu;
 
-/// The layers of a block's photon buffers: its facades facing away from the block's centre and
-/// towards it (cylindrical), its roofs and its ground (orthographic).
-enum class PhotonLayer : uint32_t { FacadeOut, FacadeIn, Roof, Ground };
-inline constexpr uint32_t kPhotonLayers = 4;
+/// The layers of a block's photon buffers: its facades (cylindrical) by the way they face, east
+/// (+x), south (+z), west and north, so that walls met along one ray from the block's axis (a street
+/// front and the side walls of the gaps behind it) keep apart; its roofs and its ground (orthographic).
+enum class PhotonLayer : uint32_t { FacadeEast, FacadeSouth, FacadeWest, FacadeNorth, Roof, Ground };
+inline constexpr uint32_t kPhotonFacadeLayers = 4, kPhotonLayers = 6;
 
 /// A block of buildings and its photon buffers. The geometry is built once per scene
 /// (integrators/photon_blocks.h); the allocation per render (level, texels) when the block is first
@@ -54,10 +55,10 @@ struct PhotonBlock {
     URBIS_HD uint32_t topTexels() const { return topU * topV; }
     /// First texel of `layer`.
     URBIS_HD uint32_t layerOffset(PhotonLayer layer) const {
-        const uint32_t k = uint32_t(layer);
-        return texelOffset + (k < 2 ? k * facadeTexels() : 2 * facadeTexels() + (k - 2) * topTexels());
+        const uint32_t k = uint32_t(layer), f = kPhotonFacadeLayers;
+        return texelOffset + (k < f ? k * facadeTexels() : f * facadeTexels() + (k - f) * topTexels());
     }
-    URBIS_HD uint32_t texels() const { return 2 * facadeTexels() + 2 * topTexels(); }
+    URBIS_HD uint32_t texels() const { return kPhotonFacadeLayers * facadeTexels() + 2 * topTexels(); }
 };
 
 /// The photon buffers: blocks, which block each building and each ground cell belongs to, and the
