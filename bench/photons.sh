@@ -30,11 +30,12 @@ sf=${SF:-$here/../../shared/data/sf_downtown_2023.osm.pbf}
 views=${VIEWS:-city-day city-night sf-day sf-night}
 mkdir -p "$out"
 
-# The options of a view: the generated city's default street view, or SF's; noon or 23:00.
+# The options of a view: a street of the generated city (README's generated_street.png), or SF's
+# view of the README; by day or at night.
 viewOptions() {
     case $1 in
-        city-day) echo "--time 2024-06-21T13:00+02:00" ;;
-        city-night) echo "--time 2024-10-15T21:00+02:00 --exposure 10 --light-sampler bvh" ;;
+        city-day) echo "--camera 8,1.7,45,-4,0.5,-20 --fov 70 --time 2024-06-21T13:00+02:00" ;;
+        city-night) echo "--camera 8,1.7,45,-4,0.5,-20 --fov 70 --time 2024-10-15T21:00+02:00 --exposure 10 --light-sampler bvh" ;;
         sf-day) echo "--osm $sf --camera-geo -122.3940,37.7950,25,200,-25 --fov 60 --time 2023-06-21T13:00-07:00" ;;
         sf-night) echo "--osm $sf --camera-geo -122.3940,37.7950,25,200,-25 --fov 60 --time 2023-06-21T23:00-07:00 --exposure 11 --light-sampler bvh" ;;
     esac

@@ -186,7 +186,7 @@ struct GpuScene::Impl {
     DeviceBuffer<SurfaceHit> hits;
     DeviceBuffer<uint8_t> blocked;
     DeviceBuffer<unsigned long long> rayCount{1};
-    std::unique_ptr<GpuPhotonPasses> photons;   ///< the photon integrators' passes and buffers, made on first use
+    std::unique_ptr<GpuPhotonPasses> photonPasses;   ///< the photon integrators' passes and buffers, made on first use
 
     /// The device film's arrays as per-ray code sees them.
     FilmView filmView() {
@@ -373,12 +373,12 @@ std::vector<float> GpuScene::timeRender(const Camera& camera, const RenderSettin
 void GpuScene::renderPhotons(const Scene& host, const Camera& camera, const RenderSettings& settings, SampleRange samples,
                              RenderCounters& counters, PhotonTimings& timings) {
     Impl& m = *impl_;
-    if (!m.photons) m.photons = std::make_unique<GpuPhotonPasses>();
+    if (!m.photonPasses) m.photonPasses = std::make_unique<GpuPhotonPasses>();
     counters = {};
     const uint64_t photonRaysBefore = timings.photonRays;
     const double secondsBefore = timings.flags + timings.photons + timings.grid + timings.camera;
     for (uint32_t s = samples.first; s < samples.first + samples.count; ++s) {
-        const PhotonsView photons = m.photons->runPass(host, m.scene.view(), camera, settings, s, timings);
+        const PhotonsView photons = m.photonPasses->runPass(host, m.scene.view(), camera, settings, s, timings);
         URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
         EventTimer timer;
         timer.start();
@@ -396,7 +396,7 @@ GpuMemory GpuScene::memory() const {
     GpuMemory out;
     out.scene = m.scene.memory();
     out.film = m.filmBytes();
-    out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes() + (m.photons ? m.photons->bytes() : 0);
+    out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes() + (m.photonPasses ? m.photonPasses->bytes() : 0);
     return out;
 }
 
