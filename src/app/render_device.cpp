@@ -55,7 +55,7 @@ void renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettin
             std::fprintf(stderr, "urbis: rendering on the CPU (%s)\n", info.reason.c_str());
         }
     }
-    report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}};
+    report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}, 0.0, PhotonTimings{}};
     if (settings.integrator == IntegratorKind::Path) {
         renderCpu(scene.view(), camera, settings, samples, film, showProgress, counters);
     } else {

@@ -105,10 +105,12 @@ void renderPhotonsCpu(const Scene& scene, const Camera& camera, const RenderSett
             b = {state.blocks.blocks.data(), uint32_t(state.blocks.blocks.size()), state.blocks.blockOfObject.data(),
                  uint32_t(state.blocks.blockOfObject.size()), state.blocks.groundCells.data(), state.blocks.groundW,
                  state.blocks.groundH, state.blocks.groundLo, state.blocks.groundCell, nullptr, state.fixedScale};
-            const std::vector<uint8_t> seen = seenBlocksCpu(view, camera, settings, s, state.blocks.blocks.size());
-            const uint32_t texels = allocateSeenBlocks(state.blocks.blocks, seen, camera.position, settings, state.passes,
-                                                       uint32_t(state.texels.size() / 3));
-            state.texels.resize(size_t(texels) * 3, 0);
+            if (newView(state.flagged, state.flaggedCamera, camera)) {
+                const std::vector<uint8_t> seen = seenBlocksCpu(view, camera, settings, s, state.blocks.blocks.size());
+                const uint32_t texels = allocateSeenBlocks(state.blocks.blocks, seen, camera.position, settings,
+                                                           state.passes, uint32_t(state.texels.size() / 3));
+                state.texels.resize(size_t(texels) * 3, 0);
+            }
             b.texels = state.texels.data();
             timings.flags += secondsSince(t);
             t = Clock::now();

@@ -23,6 +23,8 @@ struct PhotonState {
     std::vector<unsigned long long> texels;   ///< 3 per texel
     uint32_t passes = 0;                      ///< photon passes splatted so far
     float fixedScale = 0;
+    bool flagged = false;                     ///< whether the visibility flags were taken for flaggedCamera
+    Camera flaggedCamera;
 };
 
 /// The photon map's hash grid of `photons` for gather radius `radius` (cells of side 2 r): a counting

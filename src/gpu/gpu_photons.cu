@@ -124,6 +124,8 @@ struct GpuPhotonPasses::Impl {
     PhotonBlockSet blocks;            // host copy: the allocation is decided on the host
     float fixedScale = 0;
     uint32_t passes = 0, texelCount = 0;
+    bool flagged = false;             // the visibility flags, taken once per camera (newView)
+    Camera flaggedCamera;
     DeviceBuffer<PhotonBlock> deviceBlocks;
     DeviceBuffer<uint32_t> blockOfObject, groundCells;
     DeviceBuffer<unsigned long long> texels;
@@ -184,7 +186,7 @@ PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& device
         timer.start();
         view.photons.pass = m.passes;
         view.photons.buffers = m.buffersView();
-        if (m.seen.size()) {
+        if (m.seen.size() && newView(m.flagged, m.flaggedCamera, camera)) {
             URBIS_CUDA_CHECK(cudaMemset(m.seen.data(), 0, m.seen.bytes()));
             const dim3 block(kTileX, kTileY);
             const dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace urbis {
 
@@ -45,6 +46,13 @@ uint32_t allocateSeenBlocks(std::vector<PhotonBlock>& blocks, const std::vector<
             throw InputError("the photon buffers need more than 2^32 texels: raise photons.texel", FailureKind::OutOfMemory);
     }
     return uint32_t(count);
+}
+
+bool newView(bool& flagged, Camera& flaggedCamera, const Camera& camera) {
+    if (flagged && std::memcmp(&flaggedCamera, &camera, sizeof(Camera)) == 0) return false;
+    flagged = true;
+    flaggedCamera = camera;
+    return true;
 }
 
 } // namespace urbis

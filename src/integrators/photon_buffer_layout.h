@@ -3,6 +3,7 @@
 // given only to blocks the camera's chains reach (the visibility flags). docs/photons.md § Levels.
 #pragma once
 
+#include "scene/camera.h"
 #include "scene/photon_view.h"
 #include "scene/render_settings.h"
 
@@ -25,5 +26,10 @@ void layOutPhotonBlock(PhotonBlock& block, uint32_t level, float texel0, uint32_
 /// `eye`, after the `texelCount` texels already given; returns the new texel count.
 uint32_t allocateSeenBlocks(std::vector<PhotonBlock>& blocks, const std::vector<uint8_t>& seen, Vec3f eye,
                             const RenderSettings& settings, uint32_t pass, uint32_t texelCount);
+
+/// Whether the visibility flags must be taken (again) for `camera`: the first time, or when it is not
+/// the camera `flaggedCamera` they were last taken for (then it becomes that camera). Once per view,
+/// as the paper's flags once per frame: a camera at rest accumulates passes without a flag pass each.
+bool newView(bool& flagged, Camera& flaggedCamera, const Camera& camera);
 
 } // namespace urbis
