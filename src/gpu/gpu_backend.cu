@@ -5,6 +5,7 @@
 
 #include "gpu/cuda_check.h"
 #include "gpu/device_buffer.h"
+#include "gpu/device_event_timer.h"
 #include "gpu/device_scene.h"
 #include "gpu/gpu_photons.h"
 #include "integrators/aov_sample.h"
@@ -104,32 +105,6 @@ void checkLaunch(const char* kernel) {
     if (status != cudaSuccess)
         throw InputError(std::string("CUDA error launching ") + kernel + ": " + cudaGetErrorString(status), FailureKind::Device);
 }
-
-/// A pair of CUDA events around device work; elapsed time in milliseconds.
-class EventTimer {
-public:
-    EventTimer() {
-        URBIS_CUDA_CHECK(cudaEventCreate(&start_));
-        URBIS_CUDA_CHECK(cudaEventCreate(&stop_));
-    }
-    ~EventTimer() {
-        cudaEventDestroy(start_);
-        cudaEventDestroy(stop_);
-    }
-    EventTimer(const EventTimer&) = delete;
-    EventTimer& operator=(const EventTimer&) = delete;
-    void start() { URBIS_CUDA_CHECK(cudaEventRecord(start_)); }
-    float stopMs() {
-        URBIS_CUDA_CHECK(cudaEventRecord(stop_));
-        URBIS_CUDA_CHECK(cudaEventSynchronize(stop_));
-        float ms = 0;
-        URBIS_CUDA_CHECK(cudaEventElapsedTime(&ms, start_, stop_));
-        return ms;
-    }
-
-private:
-    cudaEvent_t start_ = nullptr, stop_ = nullptr;
-};
 
 std::string formatMiB(size_t bytes) {
     char text[32];

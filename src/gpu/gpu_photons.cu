@@ -4,6 +4,7 @@
 
 #include "gpu/cuda_check.h"
 #include "gpu/device_buffer.h"
+#include "gpu/device_event_timer.h"
 #include "integrators/photon_blocks.h"
 #include "integrators/photon_buffer_layout.h"
 #include "integrators/photon_camera.h"
@@ -90,32 +91,6 @@ struct HasPower {
     __host__ __device__ bool operator()(const Photon& p) const { return maxComponent(p.power) > 0.0f; }
 };
 
-/// Device time between two events around work, in seconds.
-class PassTimer {
-public:
-    PassTimer() {
-        URBIS_CUDA_CHECK(cudaEventCreate(&start_));
-        URBIS_CUDA_CHECK(cudaEventCreate(&stop_));
-    }
-    ~PassTimer() {
-        cudaEventDestroy(start_);
-        cudaEventDestroy(stop_);
-    }
-    PassTimer(const PassTimer&) = delete;
-    PassTimer& operator=(const PassTimer&) = delete;
-    void start() { URBIS_CUDA_CHECK(cudaEventRecord(start_)); }
-    double stop() {
-        URBIS_CUDA_CHECK(cudaEventRecord(stop_));
-        URBIS_CUDA_CHECK(cudaEventSynchronize(stop_));
-        float ms = 0;
-        URBIS_CUDA_CHECK(cudaEventElapsedTime(&ms, start_, stop_));
-        return ms * 1e-3;
-    }
-
-private:
-    cudaEvent_t start_ = nullptr, stop_ = nullptr;
-};
-
 } // namespace
 
 struct GpuPhotonPasses::Impl {
@@ -180,7 +155,7 @@ PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& device
     SceneView view = deviceView;
     view.photons = m.emission;
     URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
-    PassTimer timer;
+    EventTimer timer;
     const uint32_t photonBlocks = blocksFor(settings.photonsPerPass);
     if (buffers) {
         timer.start();
@@ -199,12 +174,12 @@ PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& device
             m.growTexels(m.texelCount);
         }
         view.photons.buffers = m.buffersView();
-        timings.flags += timer.stop();
+        timings.flags += timer.stopMs() * 1e-3;
         timer.start();
         if (view.costlyLeaves) photonSplatKernel<true><<<photonBlocks, kPhotonBlock>>>(view, settings, m.rayCount.data());
         else photonSplatKernel<false><<<photonBlocks, kPhotonBlock>>>(view, settings, m.rayCount.data());
         checkPhotonLaunch("photonSplatKernel");
-        timings.photons += timer.stop();
+        timings.photons += timer.stopMs() * 1e-3;
         ++m.passes;
         timings.texels = m.texelCount;
         timings.blocks = uint32_t(m.blocks.blocks.size());
@@ -223,7 +198,7 @@ PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& device
         m.stored.resize(slotCount);
         const Photon* end = thrust::copy_if(thrust::device, m.slots.data(), m.slots.data() + slotCount, m.stored.data(), HasPower{});
         const uint32_t count = uint32_t(end - m.stored.data());
-        timings.photons += timer.stop();
+        timings.photons += timer.stopMs() * 1e-3;
         timings.stored += count;
         timer.start();
         PhotonGridView& grid = view.photons.grid;
@@ -247,7 +222,7 @@ PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& device
         grid.photons = m.stored.data();
         grid.cellStart = m.cellStart.data();
         grid.cellEnd = m.cellEnd.data();
-        timings.grid += timer.stop();
+        timings.grid += timer.stopMs() * 1e-3;
     }
     timings.photonRays += m.rayCount.download()[0];
     return view.photons;

@@ -28,13 +28,23 @@ URBIS_HD inline Vec3f chainEscapeRadiance(const SceneView& scene, Vec3f dir, uin
     return radiance;
 }
 
-/// Follows the camera ray of sample `rng` (a fresh pixelSampleStream) through specular bounces to its
-/// first non-specular hit, adding to `out` what the chain sees on its way (emitters, the sky). The
-/// flag pass of the photon buffers and the camera pass call it alike, so both find the same hit.
-URBIS_HD inline CameraChainEnd followCameraChain(const SceneView& scene, const Camera& camera,
-                                                 const RenderSettings& settings, uint32_t px, uint32_t py,
-                                                 SampleStream& rng, PathSample& out) {
+/// A camera sample's chain: its random numbers (drawn up to the chain's end), what it saw on its way
+/// (emitters, the sky) and where it ended.
+struct CameraChain {
+    SampleStream rng;
+    PathSample out;
     CameraChainEnd end;
+};
+
+/// Follows the camera ray of sample `sampleIndex` through pixel (px, py) through specular bounces to
+/// its first non-specular hit. The flag pass of the photon buffers and the camera pass call it alike,
+/// so both find the same hit.
+URBIS_HD inline CameraChain followCameraChain(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
+                                              uint32_t px, uint32_t py, uint32_t sampleIndex) {
+    CameraChain chain{pixelSampleStream(settings, px, py, sampleIndex), {}, {}};
+    SampleStream& rng = chain.rng;
+    PathSample& out = chain.out;
+    CameraChainEnd& end = chain.end;
     Ray ray = cameraSampleRay(camera, settings, px, py, rng);
     for (uint32_t depth = 0; depth < settings.maxDepth; ++depth) {
         const SurfaceHit hit = traceScene(scene, ray, false);
@@ -42,7 +52,7 @@ URBIS_HD inline CameraChainEnd followCameraChain(const SceneView& scene, const C
         const Vec3f dir = normalize(ray.dir);
         if (!hit.valid()) {
             out.radiance += end.throughput * chainEscapeRadiance(scene, dir, depth);
-            return end;
+            return chain;
         }
         applyAerialPerspective(scene, ray, hit.t, end.throughput, out.radiance);
         const Material& material = scene.materials[hit.material];
@@ -50,7 +60,7 @@ URBIS_HD inline CameraChainEnd followCameraChain(const SceneView& scene, const C
         if (!isSpecular(material)) {
             end.hit = hit;
             end.wo = -dir;
-            return end;
+            return chain;
         }
         BsdfSample bsdf;
         sampleBsdf(material, -dir, hit.normal, rng.draw(), 0.0f, 0.0f, bsdf);
@@ -58,7 +68,7 @@ URBIS_HD inline CameraChainEnd followCameraChain(const SceneView& scene, const C
         const Vec3f offset = rayOriginOffset(hit.position, hit.normal);
         ray = Ray{dot(bsdf.dir, hit.normal) > 0.0f ? hit.position + offset : hit.position - offset, bsdf.dir};
     }
-    return end;
+    return chain;
 }
 
 /// Radiance of sample `sampleIndex` through pixel (px, py) by a photon integrator: the chain's
@@ -66,9 +76,9 @@ URBIS_HD inline CameraChainEnd followCameraChain(const SceneView& scene, const C
 /// light of light-sampled lights) and the photons' indirect light there.
 URBIS_HD inline PathSample photonCameraSample(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
                                               uint32_t px, uint32_t py, uint32_t sampleIndex) {
-    SampleStream rng = pixelSampleStream(settings, px, py, sampleIndex);
-    PathSample out;
-    const CameraChainEnd end = followCameraChain(scene, camera, settings, px, py, rng, out);
+    CameraChain chain = followCameraChain(scene, camera, settings, px, py, sampleIndex);
+    PathSample& out = chain.out;
+    const CameraChainEnd& end = chain.end;
     if (!end.hit.valid()) return out;
     const SurfaceHit& hit = end.hit;
     const Material& material = scene.materials[hit.material];
@@ -84,7 +94,7 @@ URBIS_HD inline PathSample photonCameraSample(const SceneView& scene, const Came
     for (uint32_t i = 0; i < direct.lightSamples; ++i) {
         Ray shadow;
         Vec3f contribution;
-        if (!sampleShadowRay(scene, direct, vertex, rng, shadow, contribution)) continue;
+        if (!sampleShadowRay(scene, direct, vertex, chain.rng, shadow, contribution)) continue;
         ++out.rays;
         if (!traceScene(scene, shadow, true).valid()) out.radiance += contribution;
     }
@@ -99,10 +109,8 @@ URBIS_HD inline PathSample photonCameraSample(const SceneView& scene, const Came
 /// The block whose buffers the camera sample's chain ends on (the flag pass), or kNoBlock.
 URBIS_HD inline uint32_t cameraSampleBlock(const SceneView& scene, const Camera& camera, const RenderSettings& settings,
                                            uint32_t px, uint32_t py, uint32_t sampleIndex) {
-    SampleStream rng = pixelSampleStream(settings, px, py, sampleIndex);
-    PathSample ignored;
-    const CameraChainEnd end = followCameraChain(scene, camera, settings, px, py, rng, ignored);
-    return end.hit.valid() ? photonBlockOf(scene.photons.buffers, end.hit.position, end.hit.object) : kNoBlock;
+    const SurfaceHit hit = followCameraChain(scene, camera, settings, px, py, sampleIndex).end.hit;
+    return hit.valid() ? photonBlockOf(scene.photons.buffers, hit.position, hit.object) : kNoBlock;
 }
 
 } // namespace urbis

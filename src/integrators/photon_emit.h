@@ -96,11 +96,10 @@ URBIS_HD inline bool emitPhoton(const SceneView& scene, uint32_t count, SampleSt
         // A cell of the tile uniformly (an unlit one emits nothing), a uniform point of its glass, a
         // cosine-distributed direction out of the wall, through the pane (lights/window_light.h).
         const WallRecord& wall = scene.walls[light.index];
-        const uint32_t n = tileCellCount(wall), across = uint32_t(wall.tileSlotEnd() - int(wall.slot0));
+        const uint32_t n = tileCellCount(wall);
+        uint32_t floor, slot;
         if (n == 0) return false;
-        const uint32_t k = uint32_t(fminf(u1 * float(n), float(n - 1)));
-        const uint32_t floor = wall.floor0 + k / across, slot = wall.slot0 + k % across;
-        const CellLayout c = cellLayout(wall, floor, slot);
+        const CellLayout c = tileCellAt(wall, u1, floor, slot);
         if (!cellLit(wall, c)) return false;
         const WindowRect r = windowRect(wall, c);
         if (!(r.area() > 0.0f)) return false;

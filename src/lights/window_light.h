@@ -109,17 +109,26 @@ URBIS_HD inline Vec3f glassTransmission(const Material& glass, float cosine) {
 /// w of the windows' glass plane (wall coordinates).
 URBIS_HD inline float glassPlaneW(const WallRecord& wall) { return -wall.reveal; }
 
+/// The cell of `wall`'s tile (which must hold one) at share `u` of its cells, uniformly: its floor,
+/// slot and layout.
+URBIS_HD inline CellLayout tileCellAt(const WallRecord& wall, float u, uint32_t& floor, uint32_t& slot) {
+    const uint32_t n = tileCellCount(wall), across = uint32_t(wall.tileSlotEnd() - int(wall.slot0));
+    const uint32_t k = uint32_t(fminf(u * float(n), float(n - 1)));
+    floor = wall.floor0 + k / across;
+    slot = wall.slot0 + k % across;
+    return cellLayout(wall, floor, slot);
+}
+
 /// A lit window of `wall` seen from `from` with three uniform numbers: a cell of the tile (uniform:
 /// an unlit one gives false), a uniform point of its glass. Fills the unit direction, the distance,
 /// the solid-angle pdf and the radiance arriving through the pane (`room`: the lit room's emission,
 /// `glass`: the pane's material). Only from in front of the glass plane.
 URBIS_HD inline bool sampleWallWindows(const WallRecord& wall, Vec3f room, const Material& glass, Vec3f from, float u0,
                                        float u1, float u2, Vec3f& dir, float& distance, float& pdf, Vec3f& radiance) {
-    const uint32_t n = tileCellCount(wall), across = uint32_t(wall.tileSlotEnd() - int(wall.slot0));
+    const uint32_t n = tileCellCount(wall);
+    uint32_t floor, slot;
     if (n == 0) return false;
-    const uint32_t k = uint32_t(fminf(u0 * float(n), float(n - 1)));
-    const uint32_t floor = wall.floor0 + k / across, slot = wall.slot0 + k % across;
-    const CellLayout c = cellLayout(wall, floor, slot);
+    const CellLayout c = tileCellAt(wall, u0, floor, slot);
     if (!cellLit(wall, c)) return false;
     const WindowRect r = windowRect(wall, c);
     const float u = r.u0 + (r.u1 - r.u0) * u1, v = r.v0 + (r.v1 - r.v0) * u2;
