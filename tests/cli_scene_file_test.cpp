@@ -67,7 +67,7 @@ TEST(CliSceneFile, SavedSceneOfTheDefaultCommandHasEveryKey) {
     }
     for (const char* section : {"source", "camera", "sun", "astronomy", "sky", "materials", "geometry", "integrator", "film", "terrain", "water", "trees"})
         EXPECT_TRUE(scene.contains(section)) << section;
-    EXPECT_EQ(keys, 112u) << "every key with its value (docs/scene_files.md)";
+    EXPECT_EQ(keys, 118u) << "every key with its value (docs/scene_files.md)";
     EXPECT_EQ(scene["integrator"]["rr_survival"], 0.95);
     EXPECT_EQ(scene["camera"]["position"], nullptr);
 }

@@ -50,6 +50,7 @@ SceneDescription unusualScene() {
     d.geometry.wallTiles = "4x2";
     d.integrator = IntegratorDescription{"path", 64, 9, 12, 4, 0.8f, "uniform"};
     d.film = FilmDescription{640, 480, 1.25f, "out/city.png", {"depth", "albedo"}};
+    d.photons = PhotonsDescription{20000, 0.75f, 0.5f, 0.25f, 60.0f};
     return d;
 }
 
@@ -84,7 +85,8 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "geometry.traffic",
         "integrator", "integrator.kind", "integrator.spp", "integrator.seed", "integrator.max_depth",
         "integrator.rr_depth", "integrator.rr_survival", "integrator.light_sampler", "integrator.light_samples",
-        "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers", "film.exr_float", "film.denoise"};
+        "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers", "film.exr_float", "film.denoise",
+        "photons", "photons.per_pass", "photons.radius", "photons.alpha", "photons.texel", "photons.level_distance"};
     EXPECT_EQ(keys, expected);
     // The geographic camera's own keys, once it is set.
     SceneDescription geo;

@@ -219,6 +219,12 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
         // The scene as a scene file has it (its order dropped: the stats' object sorts its keys).
         {"scene", nlohmann::json(sceneToJson(o.scene))},
     };
+    if (settings.integrator != IntegratorKind::Path) {
+        const PhotonTimings& p = device.photons;
+        stats["photons"] = {{"seconds", {{"flags", p.flags}, {"photons", p.photons}, {"grid", p.grid}, {"camera", p.camera}}},
+                            {"photon_rays", p.photonRays}, {"stored", p.stored}, {"texels", p.texels},
+                            {"blocks", p.blocks}, {"blocks_with_memory", p.blocksWithMemory}};
+    }
     writeTextFileAtomically(o.run.statsFile, stats.dump(2) + "\n");
 }
 
@@ -246,7 +252,8 @@ void runRender(const RenderOptions& o) {
     PreparedScene prepared = prepareScene(o.scene, run.strict, limit);
     // Written once the input has proved good, before the render's time is spent.
     if (!o.saveSceneFile.empty()) writeSceneFile(o.scene, o.saveSceneFile);
-    const RenderSettings settings = renderSettingsOf(o.scene.integrator, film);
+    RenderSettings settings = renderSettingsOf(o.scene.integrator, film);
+    applyPhotonSettings(o.scene.photons, settings);
     RenderCounters counters;
     DeviceReport device;
     Film image(settings.width, settings.height, aovs);

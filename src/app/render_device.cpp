@@ -38,12 +38,14 @@ void renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettin
                     GpuScene::upload(scene, Film::bytesFor(film.width, film.height, film.hasAovs()));
                 if (sayDevice) std::fprintf(stderr, "urbis: rendering on %s (cuda)\n", info.name.c_str());
                 gpu->setFilm(film);
-                gpu->render(camera, settings, samples, counters);
+                PhotonTimings photons;
+                if (settings.integrator == IntegratorKind::Path) gpu->render(camera, settings, samples, counters);
+                else gpu->renderPhotons(scene, camera, settings, samples, counters, photons);
                 const auto start = std::chrono::steady_clock::now();
                 if (denoise) gpu->denoise();
                 const double secondsDenoise = secondsSince(start);
                 gpu->readFilm(film);
-                report = DeviceReport{"cuda", info.name, gpu->memory(), secondsDenoise};
+                report = DeviceReport{"cuda", info.name, gpu->memory(), secondsDenoise, photons};
                 return;
             } catch (const InputError& e) {
                 if (device == "cuda") throw;
@@ -53,8 +55,13 @@ void renderOnDevice(const Scene& scene, const Camera& camera, const RenderSettin
             std::fprintf(stderr, "urbis: rendering on the CPU (%s)\n", info.reason.c_str());
         }
     }
-    report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}};
-    renderCpu(scene.view(), camera, settings, samples, film, showProgress, counters);
+    report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}, 0.0, PhotonTimings{}};
+    if (settings.integrator == IntegratorKind::Path) {
+        renderCpu(scene.view(), camera, settings, samples, film, showProgress, counters);
+    } else {
+        PhotonState state;
+        renderPhotonsCpu(scene, camera, settings, samples, film, state, counters, report.photons);
+    }
     const auto start = std::chrono::steady_clock::now();
     if (denoise) denoiseCpu(film);
     report.secondsDenoise = secondsSince(start);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "cpu/cpu_denoiser.h"
+#include "cpu/cpu_photons.h"
 #include "cpu/cpu_renderer.h"
 #include "gpu/gpu_backend.h"
 
@@ -15,6 +16,7 @@ struct DeviceReport {
     std::string name;             ///< the GPU's or the CPU's model name
     GpuMemory memory;             ///< device memory by kind (zero on the CPU)
     double secondsDenoise = 0;    ///< wall time of the denoiser (zero without)
+    PhotonTimings photons;        ///< the photon integrators' passes (zero for the path tracer)
 };
 
 /// The CPU's model name from /proc/cpuinfo, or "cpu" where unknown.

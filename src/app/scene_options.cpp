@@ -181,6 +181,16 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
                                     [](SceneDescription& d, const std::string& s) { d.integrator.lightSampler = s; }))
         sampler->check(CLI::IsMember(std::vector<std::string>(std::begin(kLightSamplers), std::end(kLightSamplers))))
             ->capture_default_str();
+    if (CLI::Option* kind = bind(cmd, "--integrator", v.integrator.kind, "path (the path tracer), photon-buffers (indirect light from per-block photon buffers) or photon-map (from a hash-grid photon map, the reference)",
+                                 [](SceneDescription& d, const std::string& s) { d.integrator.kind = s; }))
+        kind->check(CLI::IsMember(std::vector<std::string>(std::begin(kIntegratorKinds), std::end(kIntegratorKinds))))
+            ->capture_default_str();
+    range(bind(cmd, "--photons", v.photons.perPass, "Photons per pass of the photon integrators (one pass per sample)",
+               [](SceneDescription& d, uint32_t n) { d.photons.perPass = n; }),
+          1u, 1u << 26);
+    range(bind(cmd, "--photon-radius", v.photons.radius, "Metres: the photon map's gather radius at the first pass",
+               [](SceneDescription& d, float r) { d.photons.radius = r; }),
+          1e-3, 1e3);
 
     // film
     withDefault(bind(cmd, "--out", v.film.output, "Image to write; the format follows the extension: .png (tone-mapped sRGB) or .exr (linear, with AOV layers)",

@@ -121,7 +121,7 @@ struct GeometryDescription {
 };
 
 /// The integrator and its parameters. `lightSampler` picks among the lights ("uniform", "power",
-/// "bvh" or "colliders"); the path tracer is the one kind today.
+/// "bvh" or "colliders"); `kind` one of kIntegratorKinds.
 struct IntegratorDescription {
     std::string kind = "path";
     uint32_t spp = 16;
@@ -131,6 +131,15 @@ struct IntegratorDescription {
     float rrSurvival = 0.95f;    ///< largest survival probability of Russian roulette
     std::string lightSampler = "power";
     uint32_t lightSamples = 1;   ///< light samples per path vertex (0: BSDF sampling alone)
+};
+
+/// The photon integrators' parameters (docs/photons.md).
+struct PhotonsDescription {
+    uint32_t perPass = 65536;      ///< photons traced per pass (one pass per sample)
+    float radius = 1.0f;           ///< metres: the photon map's gather radius at the first pass
+    float alpha = 0.7f;            ///< the photon map's radius reduction (Knaus and Zwicker 2011)
+    float texel = 0.5f;            ///< metres: a photon buffer's texel at level 0
+    float levelDistance = 40.0f;   ///< metres: distance of level 0; each doubling one level more (0-4)
 };
 
 
@@ -158,10 +167,11 @@ struct SceneDescription {
     TerrainParams terrain;   ///< none by default: the flat ground
     WaterOptions water;   ///< the water's bed and waves (docs/water.md)
     TreeOptions trees;   ///< where trees are filled in, their sizes, crowns and colours (nature/tree_options.h)
+    PhotonsDescription photons;
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.
-inline constexpr const char* kIntegratorKinds[] = {"path"};
+inline constexpr const char* kIntegratorKinds[] = {"path", "photon-buffers", "photon-map"};  // in IntegratorKind order
 inline constexpr const char* kLightSamplers[] = {"uniform", "power", "bvh", "colliders"};  // in LightSamplerKind order
 inline constexpr const char* kTrafficSides[] = {"auto", "right", "left"};
 /// The choices of SkyDescription::model.

@@ -121,6 +121,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.vec3("bed_albedo", d.water.bedAlbedo, 0.0f, 1.0f);
         v.number("wind_speed", d.water.windSpeed, 0.0f, 60.0f);
         v.number("wind_from", d.water.windFrom, -360.0f, 360.0f);
+    });
     v.object("trees", [&] {
         v.boolean("enabled", d.trees.enabled);
         v.number("seed", d.trees.seed, 0u, UINT32_MAX);
@@ -139,6 +140,13 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.vec3("leaf_albedo", d.trees.leafAlbedo, 0.0f, 1.0f);
         v.vec3("needle_albedo", d.trees.needleAlbedo, 0.0f, 1.0f);
         v.vec3("autumn_albedo", d.trees.autumnAlbedo, 0.0f, 1.0f);
+    });
+    v.object("photons", [&] {
+        v.number("per_pass", d.photons.perPass, 1u, 1u << 26);
+        v.number("radius", d.photons.radius, 1e-3f, 1e3f);
+        v.number("alpha", d.photons.alpha, 0.01f, 1.0f);
+        v.number("texel", d.photons.texel, 0.01f, 100.0f);
+        v.number("level_distance", d.photons.levelDistance, 0.1f, 1e5f);
     });
 }
 

@@ -82,7 +82,17 @@ RenderSettings renderSettingsOf(const IntegratorDescription& integrator, const F
     for (uint32_t i = 0; i < std::size(kLightSamplers); ++i)
         if (integrator.lightSampler == kLightSamplers[i]) settings.lightSampler = LightSamplerKind(i);
     settings.lightSamples = integrator.lightSamples;
+    for (uint32_t i = 0; i < std::size(kIntegratorKinds); ++i)
+        if (integrator.kind == kIntegratorKinds[i]) settings.integrator = IntegratorKind(i);
     return settings;
+}
+
+void applyPhotonSettings(const PhotonsDescription& photons, RenderSettings& settings) {
+    settings.photonsPerPass = photons.perPass;
+    settings.photonRadius = photons.radius;
+    settings.photonAlpha = photons.alpha;
+    settings.photonTexel = photons.texel;
+    settings.photonLevelDistance = photons.levelDistance;
 }
 
 uint32_t filmLayerMaskOf(const std::vector<std::string>& layers) {

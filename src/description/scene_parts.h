@@ -36,6 +36,9 @@ Sky skyOf(const SkyDescription& sky);
 /// The per-frame settings of the integrator on a film of that size.
 RenderSettings renderSettingsOf(const IntegratorDescription& integrator, const FilmDescription& film);
 
+/// The photon integrators' parameters into `settings`.
+void applyPhotonSettings(const PhotonsDescription& photons, RenderSettings& settings);
+
 /// The layer mask (film/film_layers.h) of film.layers' names.
 uint32_t filmLayerMaskOf(const std::vector<std::string>& layers);
 

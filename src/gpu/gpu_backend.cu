@@ -5,7 +5,9 @@
 
 #include "gpu/cuda_check.h"
 #include "gpu/device_buffer.h"
+#include "gpu/device_event_timer.h"
 #include "gpu/device_scene.h"
+#include "gpu/gpu_photons.h"
 #include "integrators/aov_sample.h"
 #include "integrators/path_samples.h"
 
@@ -104,32 +106,6 @@ void checkLaunch(const char* kernel) {
         throw InputError(std::string("CUDA error launching ") + kernel + ": " + cudaGetErrorString(status), FailureKind::Device);
 }
 
-/// A pair of CUDA events around device work; elapsed time in milliseconds.
-class EventTimer {
-public:
-    EventTimer() {
-        URBIS_CUDA_CHECK(cudaEventCreate(&start_));
-        URBIS_CUDA_CHECK(cudaEventCreate(&stop_));
-    }
-    ~EventTimer() {
-        cudaEventDestroy(start_);
-        cudaEventDestroy(stop_);
-    }
-    EventTimer(const EventTimer&) = delete;
-    EventTimer& operator=(const EventTimer&) = delete;
-    void start() { URBIS_CUDA_CHECK(cudaEventRecord(start_)); }
-    float stopMs() {
-        URBIS_CUDA_CHECK(cudaEventRecord(stop_));
-        URBIS_CUDA_CHECK(cudaEventSynchronize(stop_));
-        float ms = 0;
-        URBIS_CUDA_CHECK(cudaEventElapsedTime(&ms, start_, stop_));
-        return ms;
-    }
-
-private:
-    cudaEvent_t start_ = nullptr, stop_ = nullptr;
-};
-
 std::string formatMiB(size_t bytes) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / (1024.0 * 1024.0));
@@ -185,6 +161,7 @@ struct GpuScene::Impl {
     DeviceBuffer<SurfaceHit> hits;
     DeviceBuffer<uint8_t> blocked;
     DeviceBuffer<unsigned long long> rayCount{1};
+    std::unique_ptr<GpuPhotonPasses> photonPasses;   ///< the photon integrators' passes and buffers, made on first use
 
     /// The device film's arrays as per-ray code sees them.
     FilmView filmView() {
@@ -200,13 +177,16 @@ struct GpuScene::Impl {
     }
 
     /// Launches the path tracer, then the AOV pass where the film keeps AOVs, adding `samples` to
-    /// the device film; returns after the launches (not the run).
-    void launchRender(const Camera& camera, const RenderSettings& settings, SampleRange samples) {
+    /// the device film; returns after the launches (not the run). `photons`: what a photon
+    /// integrator's camera pass sees of its photon pass.
+    void launchRender(const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                      const PhotonsView& photons = {}) {
         if (filmWidth != settings.width || filmHeight != settings.height)
             throw std::invalid_argument("GpuScene::render: the film's size is not the settings' image size");
         dim3 block(kTileX, kTileY);
         dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
-        const SceneView view = scene.view();
+        SceneView view = scene.view();
+        view.photons = photons;
         const FilmView target = filmView();
         if (view.costlyLeaves)
             renderKernel<true><<<grid, block>>>(view, camera, settings, samples, target, rayCount.data());
@@ -365,12 +345,33 @@ std::vector<float> GpuScene::timeRender(const Camera& camera, const RenderSettin
     return ms;
 }
 
+void GpuScene::renderPhotons(const Scene& host, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                             RenderCounters& counters, PhotonTimings& timings) {
+    Impl& m = *impl_;
+    if (!m.photonPasses) m.photonPasses = std::make_unique<GpuPhotonPasses>();
+    counters = {};
+    const uint64_t photonRaysBefore = timings.photonRays;
+    const double secondsBefore = timings.flags + timings.photons + timings.grid + timings.camera;
+    for (uint32_t s = samples.first; s < samples.first + samples.count; ++s) {
+        const PhotonsView photons = m.photonPasses->runPass(host, m.scene.view(), camera, settings, s, timings);
+        URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
+        EventTimer timer;
+        timer.start();
+        m.launchRender(camera, settings, SampleRange{s, 1}, photons);
+        const double seconds = timer.stopMs() * 1e-3;
+        timings.camera += seconds;
+        counters.rays += m.rayCount.download()[0];
+    }
+    counters.rays += timings.photonRays - photonRaysBefore;
+    counters.seconds = timings.flags + timings.photons + timings.grid + timings.camera - secondsBefore;
+}
+
 GpuMemory GpuScene::memory() const {
     const Impl& m = *impl_;
     GpuMemory out;
     out.scene = m.scene.memory();
     out.film = m.filmBytes();
-    out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes();
+    out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes() + (m.photonPasses ? m.photonPasses->bytes() : 0);
     return out;
 }
 

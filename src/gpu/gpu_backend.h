@@ -5,6 +5,7 @@
 
 #include "film/denoise_filter.h"
 #include "film/film.h"
+#include "integrators/photon_timings.h"
 #include "integrators/render_counters.h"
 #include "math/ray.h"
 #include "scene/camera.h"
@@ -76,6 +77,12 @@ public:
     std::vector<float> timeTrace(const std::vector<Ray>& rays, bool shadow, int warmup, int repeats);
     /// Kernel times in milliseconds of `repeats` path-traced frames after `warmup` ones.
     std::vector<float> timeRender(const Camera& camera, const RenderSettings& settings, int warmup, int repeats);
+
+    /// Adds samples `samples` by a photon integrator (settings.integrator PhotonMap or PhotonBuffers),
+    /// as renderPhotonsCpu: per sample a photon pass (gpu_photons.h) and a camera pass. The photon
+    /// buffers persist between calls on this GpuScene; `scene` is the host scene it was uploaded from.
+    void renderPhotons(const Scene& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                       RenderCounters& counters, PhotonTimings& timings);
 
     /// Device memory held now, by kind.
     GpuMemory memory() const;

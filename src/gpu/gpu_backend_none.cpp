@@ -29,6 +29,9 @@ void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, RenderC
 void GpuScene::denoise(const DenoiseParams&) { noCuda(); }
 void GpuScene::readFilm(Film&) const { noCuda(); }
 LinearImage GpuScene::render(const Camera&, const RenderSettings&, RenderCounters&) { noCuda(); }
+void GpuScene::renderPhotons(const Scene&, const Camera&, const RenderSettings&, SampleRange, RenderCounters&, PhotonTimings&) {
+    noCuda();
+}
 std::vector<SurfaceHit> GpuScene::intersect(const std::vector<Ray>&) { noCuda(); }
 std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>&) { noCuda(); }
 std::vector<float> GpuScene::timeTrace(const std::vector<Ray>&, bool, int, int) { noCuda(); }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "integrators/path_tracer.h"
+#include "integrators/photon_camera.h"
 
 namespace urbis {
 
@@ -13,7 +14,10 @@ URBIS_HD inline PathSample integrateSample(const SceneView& scene, const Camera&
     switch (settings.integrator) {
     case IntegratorKind::Path:
         return tracePath(scene, camera, settings, px, py, sampleIndex);
-        // VolumetricPath and PhotonBuffers join here.
+    case IntegratorKind::PhotonBuffers:
+    case IntegratorKind::PhotonMap:
+        return photonCameraSample(scene, camera, settings, px, py, sampleIndex);
+        // VolumetricPath joins here.
     }
     return {};
 }

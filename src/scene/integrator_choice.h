@@ -9,7 +9,9 @@ namespace urbis {
 /// Integrators both backends drive through integrateSample (integrators/integrator.h).
 enum class IntegratorKind : uint32_t {
     Path,  ///< unidirectional path tracing with MIS (integrators/path_tracer.h)
-    // VolumetricPath (media: atmosphere, clouds) and PhotonBuffers join here.
+    PhotonBuffers,  ///< indirect light from per-block photon buffers (Argudo et al.; integrators/photon_camera.h)
+    PhotonMap,      ///< indirect light from a hash-grid photon map with progressive radius reduction (the reference)
+    // VolumetricPath (media: atmosphere, clouds) joins here.
 };
 
 /// How the light sampler picks one light of the scene's list (lights/light_sampler.h).

@@ -17,6 +17,12 @@ struct RenderSettings {
     IntegratorKind integrator = IntegratorKind::Path;
     LightSamplerKind lightSampler = LightSamplerKind::Power;
     uint32_t lightSamples = 1;    ///< next-event estimates per path vertex; 0: BSDF sampling alone
+    // Photon integrators (docs/photons.md): one photon pass per sample index.
+    uint32_t photonsPerPass = 65536;
+    float photonRadius = 1.0f;        ///< metres: the photon map's gather radius at the first pass
+    float photonAlpha = 0.7f;         ///< share of photons each pass keeps when the radius shrinks (Knaus and Zwicker 2011)
+    float photonTexel = 0.5f;         ///< metres: side of a photon buffer's texel at level 0
+    float photonLevelDistance = 40.0f;  ///< metres: blocks nearer than this get level 0; each doubling one level more, up to 4
 };
 
 } // namespace urbis

@@ -4,6 +4,7 @@
 
 #include "scene/scene_arrays.h"
 #include "scene/night_sky.h"
+#include "scene/photon_view.h"
 #include "scene/scene_lights.h"
 #include "scene/sky.h"
 #include "scene/sun.h"
@@ -23,6 +24,7 @@ struct SceneView {
     Sky sky;
     NightSky night;                      ///< the moon (a disk like the sun) and the stars
     LightsView lights;                   ///< the light sampler's list and tables (not built: sun and sky)
+    PhotonsView photons;                 ///< the photon pass's map or buffers (photon integrators only)
 
     /// The first leaf slot of kind I.
     URBIS_HD uint32_t kindStart(uint32_t i) const { return i == 0 ? 0u : kindEnd[i - 1]; }

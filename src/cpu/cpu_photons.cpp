@@ -1,0 +1,151 @@
+#include "cpu/cpu_photons.h"
+
+#include "cpu/cpu_renderer.h"
+#include "integrators/photon_buffer_layout.h"
+#include "integrators/photon_camera.h"
+#include "integrators/photon_emission_setup.h"
+#include "integrators/photon_trace.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <atomic>
+#include <bit>
+#include <chrono>
+
+namespace urbis {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// Traces the pass's photons, handing each one's stores to sinkOf(photon index); returns the rays.
+template <typename SinkOf>
+uint64_t tracePhotonsCpu(const SceneView& view, const RenderSettings& settings, SinkOf sinkOf) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<uint32_t>(0, settings.photonsPerPass, 256), uint64_t(0),
+        [&](const tbb::blocked_range<uint32_t>& range, uint64_t rays) {
+            for (uint32_t i = range.begin(); i < range.end(); ++i) {
+                auto sink = sinkOf(i);
+                rays += tracePhoton(view, settings, i, sink);
+            }
+            return rays;
+        },
+        [](uint64_t a, uint64_t b) { return a + b; });
+}
+
+/// The visibility flags: which blocks the camera chains of sample `sample` end on.
+std::vector<uint8_t> seenBlocksCpu(const SceneView& view, const Camera& camera, const RenderSettings& settings,
+                                   uint32_t sample, size_t blocks) {
+    std::vector<uint8_t> seen(blocks, 0);
+    tbb::parallel_for(uint32_t(0), settings.height, [&](uint32_t y) {
+        for (uint32_t x = 0; x < settings.width; ++x) {
+            const uint32_t block = cameraSampleBlock(view, camera, settings, x, y, sample);
+            if (block != kNoBlock) __atomic_store_n(&seen[block], uint8_t(1), __ATOMIC_RELAXED);
+        }
+    });
+    return seen;
+}
+
+} // namespace
+
+PhotonGridView buildPhotonGridCpu(const std::vector<Photon>& photons, float radius, std::vector<Photon>& sorted,
+                                  std::vector<uint32_t>& start, std::vector<uint32_t>& end) {
+    const uint32_t buckets = std::bit_ceil(std::max<uint32_t>(1024, uint32_t(2 * photons.size())));
+    PhotonGridView grid;
+    grid.tableMask = buckets - 1;
+    grid.radius = radius;
+    grid.cellSize = 2.0f * radius;
+    std::vector<uint32_t> bucketOf(photons.size());
+    start.assign(buckets, 0);
+    for (size_t i = 0; i < photons.size(); ++i) {
+        int x, y, z;
+        photonCell(photons[i].position, grid.cellSize, x, y, z);
+        bucketOf[i] = photonBucket(x, y, z, grid.tableMask);
+        ++start[bucketOf[i]];
+    }
+    uint32_t sum = 0;
+    for (uint32_t& s : start) {
+        const uint32_t count = s;
+        s = sum;
+        sum += count;
+    }
+    end = start;
+    sorted.resize(photons.size());
+    for (size_t i = 0; i < photons.size(); ++i) sorted[end[bucketOf[i]]++] = photons[i];
+    grid.photons = sorted.data();
+    grid.cellStart = start.data();
+    grid.cellEnd = end.data();
+    return grid;
+}
+
+void renderPhotonsCpu(const Scene& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                      Film& film, PhotonState& state, RenderCounters& counters, PhotonTimings& timings) {
+    SceneView view = scene.view();
+    const PhotonsView emission = photonEmissionOf(scene, view);
+    view.photons = emission;
+    const bool buffers = settings.integrator == IntegratorKind::PhotonBuffers;
+    if (buffers && !state.built) {
+        state.blocks = buildPhotonBlocks(scene);
+        state.fixedScale = photonFixedScale(view, emission, settings);
+        state.built = true;
+    }
+    std::vector<Photon> slots, stored, sorted;
+    std::vector<uint32_t> start, end;
+    counters = {};
+    const auto began = Clock::now();
+    const uint64_t photonRaysBefore = timings.photonRays;
+    for (uint32_t s = samples.first; s < samples.first + samples.count; ++s) {
+        auto t = Clock::now();
+        if (buffers) {
+            // Visibility flags, then memory for the blocks seen for the first time; then the splats.
+            view.photons.pass = state.passes;
+            PhotonBuffersView& b = view.photons.buffers;
+            b = {state.blocks.blocks.data(), uint32_t(state.blocks.blocks.size()), state.blocks.blockOfObject.data(),
+                 uint32_t(state.blocks.blockOfObject.size()), state.blocks.groundCells.data(), state.blocks.groundW,
+                 state.blocks.groundH, state.blocks.groundLo, state.blocks.groundCell, nullptr, state.fixedScale};
+            if (newView(state.flagged, state.flaggedCamera, camera)) {
+                const std::vector<uint8_t> seen = seenBlocksCpu(view, camera, settings, s, state.blocks.blocks.size());
+                const uint32_t texels = allocateSeenBlocks(state.blocks.blocks, seen, camera.position, settings,
+                                                           state.passes, uint32_t(state.texels.size() / 3));
+                state.texels.resize(size_t(texels) * 3, 0);
+            }
+            b.texels = state.texels.data();
+            timings.flags += secondsSince(t);
+            t = Clock::now();
+            timings.photonRays += tracePhotonsCpu(view, settings, [&](uint32_t) { return PhotonSplatSink{b}; });
+            ++state.passes;
+        } else {
+            view.photons.pass = s;
+            const uint32_t perPhoton = settings.maxDepth;
+            slots.assign(size_t(settings.photonsPerPass) * perPhoton, Photon{});
+            timings.photonRays += tracePhotonsCpu(view, settings, [&](uint32_t i) {
+                return PhotonSlotSink{slots.data() + size_t(i) * perPhoton};
+            });
+            stored.clear();
+            for (const Photon& p : slots)
+                if (maxComponent(p.power) > 0.0f) stored.push_back(p);
+            timings.stored += stored.size();
+            timings.photons += secondsSince(t);
+            t = Clock::now();
+            view.photons.grid = buildPhotonGridCpu(stored, photonRadiusAt(settings.photonRadius, settings.photonAlpha, s),
+                                                   sorted, start, end);
+            timings.grid += secondsSince(t);
+        }
+        if (buffers) timings.photons += secondsSince(t);
+        t = Clock::now();
+        RenderCounters pass;
+        renderCpu(view, camera, settings, SampleRange{s, 1}, film, false, pass);
+        timings.camera += secondsSince(t);
+        counters.rays += pass.rays;
+    }
+    counters.rays += timings.photonRays - photonRaysBefore;
+    counters.seconds = secondsSince(began);
+    timings.texels = state.texels.size() / 3;
+    timings.blocks = uint32_t(state.blocks.blocks.size());
+    timings.blocksWithMemory = 0;
+    for (const PhotonBlock& b : state.blocks.blocks) timings.blocksWithMemory += b.texelOffset != kNoTexels;
+}
+
+} // namespace urbis
