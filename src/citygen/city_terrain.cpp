@@ -9,7 +9,11 @@ TerrainField cityTerrainOf(const TerrainParams& params, const GeoOrigin& origin,
     if (!params.enabled()) return {};
     const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
     TerrainField terrain = buildTerrain(params, origin, centre.x, centre.z, uint32_t(mesh.materials.size()));
-    for (const Material& m : terrainMaterials()) mesh.materials.push_back(m);
+    std::vector<Material> materials = terrainMaterials();
+    // Real elevation under a city is the city's ground where nothing covers it, not a meadow.
+    if (params.kind != "fbm" && mesh.groundMaterial < mesh.materials.size())
+        materials[uint32_t(TerrainMaterial::Grass)] = mesh.materials[mesh.groundMaterial];
+    for (const Material& m : materials) mesh.materials.push_back(m);
     placeCityOnTerrain(mesh, terrain);
     return terrain;
 }
