@@ -105,6 +105,7 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain) {
         }
     }
     for (LampRecord& lamp : mesh.lamps) lamp.base.y += terrain.heightAt(lamp.base.x, lamp.base.z);
+    for (TreeRecord& tree : mesh.trees) tree.base.y += terrain.heightAt(tree.base.x, tree.base.z);
     // The framing follows the ground under each piece; the city's bounds take every building's lift.
     for (Bounds3f& piece : mesh.framingPieces) {
         if (piece.empty()) continue;

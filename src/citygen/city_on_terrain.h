@@ -2,7 +2,7 @@
 // roofs, roads and lamps stays as it is: every building is raised to the highest ground under its
 // footprint (its entrance level, where its floors start) and its walls continued down to the lowest
 // (no gap on a slope); the streets' surfaces are cut where the ground bends under them, into pieces
-// down to two sample spacings, and each vertex raised by the ground under it; lamps stand on the ground.
+// down to two sample spacings, and each vertex raised by the ground under it; lamps and trees stand on the ground.
 #pragma once
 
 #include "citygen/city_mesher.h"
