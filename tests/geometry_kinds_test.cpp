@@ -54,11 +54,13 @@ void expectUnitFrame(const SurfaceHit& h) {
 } // namespace
 
 TEST(PrimKinds, ListIndicesAndCosts) {
-    EXPECT_EQ(kPrimKindCount, 4u);
+    EXPECT_EQ(kPrimKindCount, 5u);
     EXPECT_EQ(kPrimKindOf<Triangle>, 0u);
     EXPECT_EQ(kPrimKindOf<WallRecord>, 1u);
     EXPECT_EQ(kPrimKindOf<GroundRecord>, 2u);
     EXPECT_EQ(kPrimKindOf<LampRecord>, 3u);
+    EXPECT_EQ(kPrimKindOf<PlanetRecord>, 4u);
+    EXPECT_TRUE(kCostlyKind<kPrimKindOf<PlanetRecord>>);
     EXPECT_FALSE(kCostlyKind<kPrimKindOf<Triangle>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<WallRecord>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<LampRecord>>);
@@ -149,7 +151,7 @@ TEST(SceneArrays, MemoryListsEveryArrayOnce) {
         sum += bytes;
         ++arrays;
     });
-    EXPECT_EQ(arrays, 21u);   // the four kinds' records, triangle info, nodes, materials, road segments, the ten light arrays and the atmosphere's three tables
+    EXPECT_EQ(arrays, 22u);   // the five kinds' records, triangle info, nodes, materials, road segments, the ten light arrays and the atmosphere's three tables
     EXPECT_EQ(sum, memory.total());
     EXPECT_EQ(memory.grounds, sizeof(GroundRecord));
     EXPECT_EQ(memory.walls, scene.walls.size() * sizeof(WallRecord));

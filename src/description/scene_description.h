@@ -5,6 +5,7 @@
 #pragma once
 
 #include "citygen/city_mesher.h"
+#include "description/planet_description.h"
 #include "scene/geometry_modes.h"
 #include "film/film_layers.h"
 #include "scene/sky.h"
@@ -153,6 +154,7 @@ struct SceneDescription {
     GeometryDescription geometry;
     IntegratorDescription integrator;
     FilmDescription film;
+    std::optional<PlanetDescription> planet;  ///< a whole planet instead of the city (docs/planets.md)
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.

@@ -6,6 +6,7 @@
 
 #include "geometry/ground_intersect.h"
 #include "geometry/lamp_kind.h"
+#include "geometry/planet_intersect.h"
 #include "geometry/triangle_kind.h"
 #include "geometry/wall_kind.h"
 

@@ -33,7 +33,8 @@
     X(float, skyTable, "sky_table")                    \
     X(Vec3f, transmittanceLut, "transmittance_lut")    \
     X(Vec3f, multiScatteringLut, "multiscattering_lut") \
-    X(Vec3f, skyViewLut, "sky_view_lut")
+    X(Vec3f, skyViewLut, "sky_view_lut")               \
+    X(PlanetRecord, planets, "planets")
 
 namespace urbis {
 
@@ -53,9 +54,10 @@ URBIS_HD auto& kindArray(auto& arrays) {
     if constexpr (std::is_same_v<Record, Triangle>) return arrays.triangles;
     else if constexpr (std::is_same_v<Record, WallRecord>) return arrays.walls;
     else if constexpr (std::is_same_v<Record, GroundRecord>) return arrays.grounds;
+    else if constexpr (std::is_same_v<Record, LampRecord>) return arrays.lamps;
     else {
-        static_assert(std::is_same_v<Record, LampRecord>, "a kind of PrimKinds without its array here");
-        return arrays.lamps;
+        static_assert(std::is_same_v<Record, PlanetRecord>, "a kind of PrimKinds without its array here");
+        return arrays.planets;
     }
 }
 
