@@ -136,8 +136,8 @@ double surfaceRoughness(const PlanetRecord& pl, Vec3f origin) {
     for (int n = 0; n < 200; ++n) {
         const float pitch = -0.5236f + 0.0005f * float(n);
         const Vec3f dir{0.0f, std::sin(pitch), -std::cos(pitch)};
-        float t;
-        bool ocean;
+        float t = 0.0f;
+        bool ocean = false;
         EXPECT_TRUE(intersectPlanet(pl, Ray{origin, dir}, t, ocean));
         EXPECT_FALSE(ocean);
         float lo = t - 0.05f, hi = t + 0.1f;
