@@ -39,6 +39,7 @@ LAYERS = {
     "lights": 7,        # light sampling over the light records: light interface, light sampler, MIS
     "integrators": 8,   # the integrator interface, the path tracer, the AOV pass
     "model": 9,         # the city model: buildings, parts, polygons and their GEOS wrapper, the reasons buildings were dropped
+    "planet": 9,        # whole planets: the record around a camera (double on the host), their scene
     "osm": 10,          # OpenStreetMap import into the city model
     "layout": 10,       # procedurally generated cities as a city model
     "streets": 11,      # city model -> street meshes and records: roads, junctions, sidewalks, markings

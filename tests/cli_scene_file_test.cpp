@@ -62,12 +62,16 @@ TEST(CliSceneFile, SavedSceneOfTheDefaultCommandHasEveryKey) {
     const nlohmann::json scene = nlohmann::json::parse(readFile(dir / "s.json"));
     size_t keys = 0;
     for (const auto& [section, fields] : scene.items()) {
+        if (section == "planet" && fields.is_null()) {  // no planet: the city
+            ++keys;
+            continue;
+        }
         ASSERT_TRUE(fields.is_object()) << section;
         for (const auto& [key, value] : fields.items()) keys += 1 + (value.is_object() ? value.size() : 0);
     }
     for (const char* section : {"source", "camera", "sun", "astronomy", "sky", "materials", "geometry", "integrator", "film", "terrain", "water", "trees"})
         EXPECT_TRUE(scene.contains(section)) << section;
-    EXPECT_EQ(keys, 118u) << "every key with its value (docs/scene_files.md)";
+    EXPECT_EQ(keys, 119u) << "every key with its value (docs/scene_files.md)";
     EXPECT_EQ(scene["integrator"]["rr_survival"], 0.95);
     EXPECT_EQ(scene["camera"]["position"], nullptr);
 }

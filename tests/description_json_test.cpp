@@ -37,6 +37,8 @@ SceneDescription unusualScene() {
     d.source.seed = 77;
     d.camera.geo = GeoCameraDescription{-122.397, 37.789, 300.0f, 20.0f, -25.0f};
     d.camera.fov = 35.5f;
+    d.planet = PlanetDescription{3389.5, 150.0f, 6000.0f, 1234.5f, 0.55f, 17, 9, Vec3f{0.02f, 0.04f, 0.05f}, 0.3f,
+                                 PlanetCameraDescription{0.002, -12.5, 77.25, 30.0f, 5.0f}};
     d.sun = SunDescription{12.0f, 270.0f, 0.5f, Vec3f{1.0f, 2.0f, 3.0f}};
     d.astronomy = AstronomyDescription{"2024-06-21T20:30+02:00", std::array<double, 2>{-122.4, 37.79}, false};
     d.sky = SkyDescription{Vec3f{0.1f, 0.2f, 0.3f}, Vec3f{0.4f, 0.5f, 0.6f}, Vec3f{0.7f, 0.8f, 0.9f}, 0.3f};
@@ -86,7 +88,7 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "integrator", "integrator.kind", "integrator.spp", "integrator.seed", "integrator.max_depth",
         "integrator.rr_depth", "integrator.rr_survival", "integrator.light_sampler", "integrator.light_samples",
         "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers", "film.exr_float", "film.denoise",
-        "photons", "photons.per_pass", "photons.radius", "photons.alpha", "photons.texel", "photons.level_distance"};
+        "photons", "photons.per_pass", "photons.radius", "photons.alpha", "photons.texel", "photons.level_distance", "planet"};
     EXPECT_EQ(keys, expected);
     // The geographic camera's own keys, once it is set.
     SceneDescription geo;
@@ -95,6 +97,16 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
     collectKeys(sceneToJson(geo), "", keys);
     for (const char* key : {"camera.geo.lon", "camera.geo.lat", "camera.geo.altitude", "camera.geo.heading", "camera.geo.pitch"})
         EXPECT_TRUE(keys.count(key)) << key;
+    // A planet's own keys, once it is set (docs/planets.md).
+    SceneDescription planet;
+    planet.planet = PlanetDescription{};
+    keys.clear();
+    collectKeys(sceneToJson(planet), "", keys);
+    for (const char* key : {"planet.radius_km", "planet.sea_level", "planet.amplitude", "planet.wavelength_km", "planet.gain",
+                            "planet.octaves", "planet.seed", "planet.ocean_colour", "planet.atmosphere_scale",
+                            "planet.camera.altitude_km", "planet.camera.lat", "planet.camera.lon", "planet.camera.heading",
+                            "planet.camera.pitch"})
+        EXPECT_TRUE(keys.count(key)) << key;
 }
 
 TEST(DescriptionJson, EveryKeyIsDocumented) {
@@ -102,6 +114,7 @@ TEST(DescriptionJson, EveryKeyIsDocumented) {
     ASSERT_FALSE(docs.empty()) << "docs/scene_files.md";
     SceneDescription d;
     d.camera.geo = GeoCameraDescription{};
+    d.planet = PlanetDescription{};
     std::set<std::string> keys;
     collectKeys(sceneToJson(d), "", keys);
     for (const std::string& key : keys) EXPECT_NE(docs.find("`" + key + "`"), std::string::npos) << key;

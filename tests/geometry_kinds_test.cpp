@@ -63,6 +63,8 @@ TEST(PrimKinds, ListIndicesAndCosts) {
     EXPECT_TRUE(kKindAtBvhRoot<kPrimKindOf<TerrainRecord>>);
     EXPECT_EQ(kPrimKindOf<TreeRecord>, 5u);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<TreeRecord>>);
+    EXPECT_EQ(kPrimKindOf<PlanetRecord>, 6u);
+    EXPECT_TRUE(kCostlyKind<kPrimKindOf<PlanetRecord>>);
     EXPECT_FALSE(kCostlyKind<kPrimKindOf<Triangle>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<WallRecord>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<LampRecord>>);
@@ -153,7 +155,7 @@ TEST(SceneArrays, MemoryListsEveryArrayOnce) {
         sum += bytes;
         ++arrays;
     });
-    EXPECT_EQ(arrays, 24u);   // the six kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples
+    EXPECT_EQ(arrays, 25u);   // the seven kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples
     EXPECT_EQ(sum, memory.total());
     EXPECT_EQ(memory.grounds, sizeof(GroundRecord));
     EXPECT_EQ(memory.walls, scene.walls.size() * sizeof(WallRecord));

@@ -5,6 +5,7 @@
 #include "app/memory_json.h"
 #include "app/memory_limit.h"
 #include "app/output_paths.h"
+#include "app/planet_scene.h"
 #include "app/render_device.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
@@ -111,6 +112,7 @@ BuildSummary summarise(const CityModel& city, const CityMesh& mesh) {
 } // namespace
 
 PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memoryLimit) {
+    if (d.planet) return preparePlanetScene(d);
     PreparedScene p;
     CityMeshOptions meshOptions;
     meshOptions.geometry = p.geometry = d.geometry.modes;

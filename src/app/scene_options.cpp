@@ -213,6 +213,35 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
         overrides_.emplace_back(flag, [&v](SceneDescription& d) { d.film.denoise = v.film.denoise; });
     }
     addTerrainOptions(cmd);
+
+    // a whole planet instead of the city (docs/planets.md)
+    if (CLI::Option* planet = bind(cmd, "--planet", text_.planet,
+                                   "[RADIUS_KM]: render a whole planet instead of the city (default Earth-like, 6360 km, "
+                                   "or the scene file's planet)",
+                                   [](SceneDescription& d, const std::string& text) {
+                                       if (!d.planet) d.planet = PlanetDescription{};
+                                       if (text.empty()) return;
+                                       const double r = parseNumberList("--planet", text, ',', 1, 1)[0];
+                                       if (!(r >= 10.0 && r <= 1e6))
+                                           throw InputError("--planet: radius must be in [10, 1e6] km, got '" + text + "'",
+                                                            FailureKind::Usage);
+                                       d.planet->radiusKm = r;
+                                   }))
+        planet->expected(0, 1);
+    bind(cmd, "--camera-orbit", text_.cameraOrbit,
+         "ALT_KM,LAT,LON[,HEADING,PITCH]: the camera above a planet (--planet): km above the ground under it, degrees "
+         "(heading clockwise from north, pitch above the horizon; default 0,-90: straight down)",
+         [](SceneDescription& d, const std::string& text) {
+             if (!d.planet) throw InputError("--camera-orbit: places the camera above a planet and needs --planet", FailureKind::Usage);
+             const std::vector<double> c = parseNumberList("--camera-orbit", text, ',', 3, 5);
+             if (!(c[0] >= 0.0 && c[0] <= 1e6 && c[1] >= -90.0 && c[1] <= 90.0 && c[2] >= -360.0 && c[2] <= 360.0))
+                 throw InputError("--camera-orbit: need 0 <= ALT_KM <= 1e6, LAT in [-90, 90], LON in [-360, 360], got '" +
+                                      text + "'", FailureKind::Usage);
+             PlanetCameraDescription& camera = d.planet->camera;
+             camera = {c[0], c[1], c[2], c.size() > 3 ? float(c[3]) : 0.0f, c.size() > 4 ? float(c[4]) : -90.0f};
+             if (!(camera.pitch >= -90.0f && camera.pitch <= 90.0f))
+                 throw InputError("--camera-orbit: PITCH must be in [-90, 90] degrees", FailureKind::Usage);
+         });
 }
 
 SceneDescription SceneCommandLine::resolve() const {

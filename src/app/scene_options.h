@@ -48,6 +48,7 @@ private:
     SceneDescription values_;   ///< storage of the options that take a field's own type
     struct CompoundValues {     ///< storage of the options that take a text ("40,150", "20:100", ...)
         std::string bbox, heightRange, camera, cameraGeo, time, location, sun, geometry;
+        std::string planet, cameraOrbit;
     } text_;
     std::string sceneFile_, saveScene_;
     bool noStreets_ = false;   ///< --no-streets

@@ -48,6 +48,10 @@ std::optional<SceneProblem> firstSceneProblem(const SceneDescription& d) {
     if (!wallTileSizeOf(d.geometry.wallTiles))
         return SceneProblem{"geometry.wall_tiles", "--wall-tiles",
                             "need 'whole' or SLOTSxFLOORS (e.g. 4x4), got '" + d.geometry.wallTiles + "'"};
+    if (d.planet && !(d.planet->amplitude < 0.2 * d.planet->radiusKm * 1e3))
+        return SceneProblem{"planet.amplitude", "--planet", "must be under a fifth of the radius"};
+    if (d.planet && !(std::fabs(d.planet->seaLevel) <= d.planet->amplitude + 1.0f))
+        return SceneProblem{"planet.sea_level", "--planet", "must lie within the terrain's amplitude"};
     return std::nullopt;
 }
 

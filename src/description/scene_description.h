@@ -5,6 +5,7 @@
 #pragma once
 
 #include "citygen/city_mesher.h"
+#include "description/planet_description.h"
 #include "scene/geometry_modes.h"
 #include "film/film_layers.h"
 #include "scene/sky.h"
@@ -168,6 +169,7 @@ struct SceneDescription {
     WaterOptions water;   ///< the water's bed and waves (docs/water.md)
     TreeOptions trees;   ///< where trees are filled in, their sizes, crowns and colours (nature/tree_options.h)
     PhotonsDescription photons;
+    std::optional<PlanetDescription> planet;  ///< a whole planet instead of the city (docs/planets.md)
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.

@@ -148,6 +148,24 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.number("texel", d.photons.texel, 0.01f, 100.0f);
         v.number("level_distance", d.photons.levelDistance, 0.1f, 1e5f);
     });
+    v.optionalObject("planet", d.planet, [&](auto& p) {
+        v.number("radius_km", p.radiusKm, 10.0, 1e6);
+        v.number("sea_level", p.seaLevel, -1e5f, 1e5f);
+        v.number("amplitude", p.amplitude, 0.0f, 1e5f);
+        v.number("wavelength_km", p.wavelengthKm, 0.01f, 1e6f);
+        v.number("gain", p.gain, 0.05f, 0.95f);
+        v.number("octaves", p.octaves, 1u, 24u);
+        v.number("seed", p.seed, 0u, UINT32_MAX);
+        v.vec3("ocean_colour", p.oceanColour, 0.0f, 1.0f);
+        v.number("atmosphere_scale", p.atmosphereScale, 0.001f, 100.0f);
+        v.object("camera", [&] {
+            v.number("altitude_km", p.camera.altitudeKm, 0.0, 1e6);
+            v.number("lat", p.camera.lat, -90.0, 90.0);
+            v.number("lon", p.camera.lon, -360.0, 360.0);
+            v.number("heading", p.camera.heading, -360.0f, 360.0f);
+            v.number("pitch", p.camera.pitch, -90.0f, 90.0f);
+        });
+    });
 }
 
 } // namespace urbis

@@ -8,6 +8,7 @@
 #include "geometry/lamp_kind.h"
 #include "geometry/terrain_intersect.h"
 #include "geometry/tree_kind.h"
+#include "geometry/planet_intersect.h"
 #include "geometry/triangle_kind.h"
 #include "geometry/wall_kind.h"
 

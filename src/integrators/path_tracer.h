@@ -12,7 +12,7 @@
 #include "lights/light_sampler.h"
 #include "lights/mis.h"
 #include "lights/star_field.h"
-#include "media/aerial_perspective.h"
+#include "media/planet_atmosphere.h"
 #include "scene/render_settings.h"
 
 namespace urbis {
@@ -196,7 +196,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                 skyWeight = bsdfFoundWeight(bounce, LightKind::Sky, settings.lightSamples,
                                             lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.skyLight),
                                             lightPdf(scene, sky, dir, 0.0f, 0.0f));
-            out.radiance += throughput * skyRadiance(scene, dir) * skyWeight;
+            out.radiance += throughput * skyRadianceFrom(scene, ray.origin, dir) * skyWeight;
             // The camera ray (depth 0) does not show the sun's disk.
             if (depth > 0 && sunEnabled(scene.sun) && sunContains(scene.sun, dir)) {
                 float sunWeight = 1.0f;
@@ -204,7 +204,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
                     sunWeight = bsdfFoundWeight(bounce, LightKind::Sun, settings.lightSamples,
                                                 lightSelectionPmf(lights, settings.lightSampler, bounce.from, lights.sunLight),
                                                 sunPdf(scene.sun));
-                out.radiance += throughput * scene.sun.radiance * sunWeight;
+                out.radiance += throughput * scene.sun.radiance * diskTransmittanceFrom(scene, ray.origin, dir) * sunWeight;
             }
             // The moon's disk, which camera rays see too, and the stars (lights/star_field.h).
             if (sunContains(scene.night.moon, dir)) {
@@ -217,7 +217,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             out.radiance += throughput * nightSkyRadiance(scene.night.stars, dir);
             pathEnds = true;
         } else {
-            applyAerialPerspective(scene, ray, hit.t, throughput, out.radiance);
+            applySegmentMedium(scene, ray, hit.t, throughput, out.radiance);
             throughput *= water.transmittance(hit.t * length(ray.dir));
             const Material& material = scene.materials[hit.material];
             const Vec3f dir = normalize(ray.dir);

@@ -35,7 +35,7 @@ URBIS_HD inline bool sampleLight(const SceneView& scene, const LightRecord& ligh
         const Sun& disk = diskLight(scene, light.kind);
         if (!sunEnabled(disk)) return false;
         s.dir = sampleSunDirection(disk, u1, u2);
-        s.radiance = disk.radiance;
+        s.radiance = disk.radiance * diskTransmittanceFrom(scene, from, s.dir);
         s.pdf = sunPdf(disk);
         return true;
     }

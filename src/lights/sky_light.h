@@ -10,6 +10,7 @@
 #include "math/piecewise_constant.h"
 #include "math/sampling.h"
 #include "media/atmosphere_lut.h"
+#include "media/planet_atmosphere.h"
 #include "scene/scene_view.h"
 
 namespace urbis {
@@ -28,6 +29,15 @@ URBIS_HD inline Vec3f analyticSkyRadiance(const Sky& sky, Vec3f dir) {
 URBIS_HD inline Vec3f skyRadiance(const SceneView& scene, Vec3f dir) {
     if (scene.sky.model == SkyModel::Analytic) return analyticSkyRadiance(scene.sky, dir);
     return lutBilinear(scene.skyViewLut, kSkyViewLutWidth, kSkyViewLutHeight, skyViewLutCoord(scene.sky.atmosphere, dir));
+}
+
+/// The sky's radiance along a ray from the world point `origin` in the unit direction `dir` that meets
+/// no surface: skyRadiance in a city; around a planet, the atmosphere marched from `origin` (in orbit
+/// or on the ground), since one table seen from one point cannot hold both.
+URBIS_HD inline Vec3f skyRadianceFrom(const SceneView& scene, Vec3f origin, Vec3f dir) {
+    const PlanetRecord* pl = scenePlanet(scene);
+    if (pl && scene.sky.model == SkyModel::Atmosphere) return planetSkyRadiance(scene, *pl, origin, dir);
+    return skyRadiance(scene, dir);
 }
 
 /// The unit direction at (u, v) of the map.

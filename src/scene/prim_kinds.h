@@ -8,6 +8,7 @@
 #include "scene/lamp_record.h"
 #include "scene/terrain_record.h"
 #include "scene/tree_record.h"
+#include "scene/planet_record.h"
 #include "scene/triangle.h"
 #include "scene/wall_record.h"
 
@@ -26,7 +27,7 @@ struct PrimKindList {
 
 /// Every kind, by record; its place in the list is its kind index (SurfaceHit::kind), and the BVH's
 /// leaf slots of each kind follow those of the kinds before it.
-using PrimKinds = PrimKindList<Triangle, WallRecord, GroundRecord, LampRecord, TerrainRecord, TreeRecord>;
+using PrimKinds = PrimKindList<Triangle, WallRecord, GroundRecord, LampRecord, TerrainRecord, TreeRecord, PlanetRecord>;
 inline constexpr uint32_t kPrimKindCount = PrimKinds::count;
 /// SurfaceHit::kind of no hit.
 inline constexpr uint32_t kNoPrimKind = 0xffu;

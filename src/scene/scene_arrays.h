@@ -36,7 +36,8 @@
     X(Vec3f, skyViewLut, "sky_view_lut")               \
     X(TerrainRecord, terrains, "terrain_records")      \
     X(float, terrainData, "terrain")                  \
-    X(TreeRecord, trees, "trees")
+    X(TreeRecord, trees, "trees")                     \
+    X(PlanetRecord, planets, "planets")
 
 namespace urbis {
 
@@ -58,9 +59,10 @@ URBIS_HD auto& kindArray(auto& arrays) {
     else if constexpr (std::is_same_v<Record, GroundRecord>) return arrays.grounds;
     else if constexpr (std::is_same_v<Record, LampRecord>) return arrays.lamps;
     else if constexpr (std::is_same_v<Record, TerrainRecord>) return arrays.terrains;
+    else if constexpr (std::is_same_v<Record, TreeRecord>) return arrays.trees;
     else {
-        static_assert(std::is_same_v<Record, TreeRecord>, "a kind of PrimKinds without its array here");
-        return arrays.trees;
+        static_assert(std::is_same_v<Record, PlanetRecord>, "a kind of PrimKinds without its array here");
+        return arrays.planets;
     }
 }
 

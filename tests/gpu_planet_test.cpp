@@ -1,0 +1,82 @@
+// Image parity for whole planets (docs/planets.md): the same planet, camera and seed path traced on
+// the GPU and on the CPU, from orbit (the disc, its limb and the atmosphere's march), from 10 km and
+// 2 m above the ground (camera-relative coordinates at the surface), by day and at sunset.
+#include "gpu_test_support.h"
+
+#include "cpu/cpu_renderer.h"
+#include "planet/planet_build.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace urbis;
+
+// Metric: per-pixel luminance of the linear images (mean of spp samples). The march is plain
+// shading-style arithmetic (not the exact helpers: its hits are the fBm's, which the GPU evaluates
+// with contracted multiply-adds and its approximate log2 and square root), so a hit's distance may
+// differ by a fraction of the march's tolerance and a path may then go elsewhere; silhouette and
+// coastline pixels may flip. Tolerances: the mean absolute difference under 2 % of the mean
+// luminance, at most 2 % of pixels off by more than 10 % relative.
+namespace {
+
+void expectPlanetImagesMatch(double altitudeKm, float pitch, float sunElevation) {
+    PlanetShape shape;
+    shape.seaLevel = 400.0f;
+    PlanetCameraPlacement placement;
+    placement.altitude = altitudeKm * 1e3;
+    placement.lat = 46.0;
+    placement.lon = 7.5;
+    placement.pitch = pitch;
+    placement.heading = 250.0f;
+    RenderSettings settings;
+    settings.width = 192;
+    settings.height = 128;
+    settings.spp = 16;
+    settings.seed = 7;
+    const PlanetRecord pl = makePlanetRecord(shape, placement, settings.height, 0);
+    Sky sky;
+    sky.model = SkyModel::Atmosphere;
+    const Scene scene = buildPlanetScene(pl, {0.01f, 0.03f, 0.07f}, makeSun(sunElevation, 250.0f, 0.27f, {3.3f, 3.1f, 2.8f}),
+                                         NightSky{}, planetSky(sky, pl, 1.0f));
+    const Camera camera = planetCamera(placement, float(settings.width) / float(settings.height));
+
+    RenderCounters cpuCounters, gpuCounters;
+    const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
+    std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
+    const LinearImage img = gpu->render(camera, settings, gpuCounters);
+    ASSERT_EQ(img.pixels.size(), cpu.pixels.size());
+    double sum = 0, sumDiff = 0;
+    size_t off = 0;
+    for (size_t i = 0; i < cpu.pixels.size(); ++i) {
+        const double a = luminance(cpu.pixels[i]), b = luminance(img.pixels[i]);
+        ASSERT_TRUE(std::isfinite(b)) << "pixel " << i;
+        sum += a;
+        sumDiff += std::fabs(a - b);
+        off += std::fabs(a - b) > 0.1 * std::max(a, 1e-6);
+    }
+    const double n = double(cpu.pixels.size()), mean = sum / n;
+    std::printf("planet parity (%.3f km up, pitch %.0f, sun %.0f): mean luminance %.5f, mean |diff| %.3g (%.3f%%), %zu of "
+                "%zu pixels off by > 10%%; rays cpu %llu gpu %llu\n",
+                altitudeKm, double(pitch), double(sunElevation), mean, sumDiff / n, 100.0 * sumDiff / n / mean, off,
+                cpu.pixels.size(), (unsigned long long)cpuCounters.rays, (unsigned long long)gpuCounters.rays);
+    ASSERT_GT(mean, 1e-4) << "the image is black";
+    EXPECT_LT(sumDiff / n, 0.02 * mean);
+    EXPECT_LE(double(off), 0.02 * n);
+}
+
+} // namespace
+
+TEST(GpuPlanet, FromOrbitMatchesTheCpu) {
+    URBIS_SKIP_WITHOUT_GPU();
+    expectPlanetImagesMatch(12000.0, -90.0f, 40.0f);
+}
+
+TEST(GpuPlanet, FromTenKilometresMatchesTheCpu) {
+    URBIS_SKIP_WITHOUT_GPU();
+    expectPlanetImagesMatch(10.0, -10.0f, 40.0f);
+}
+
+TEST(GpuPlanet, TwoMetresAboveTheGroundAtSunsetMatchesTheCpu) {
+    URBIS_SKIP_WITHOUT_GPU();
+    expectPlanetImagesMatch(0.002, 5.0f, 3.0f);
+}
