@@ -65,9 +65,9 @@ TEST(CliSceneFile, SavedSceneOfTheDefaultCommandHasEveryKey) {
         ASSERT_TRUE(fields.is_object()) << section;
         for (const auto& [key, value] : fields.items()) keys += 1 + (value.is_object() ? value.size() : 0);
     }
-    for (const char* section : {"source", "camera", "sun", "astronomy", "sky", "materials", "geometry", "integrator", "film"})
+    for (const char* section : {"source", "camera", "sun", "astronomy", "sky", "materials", "geometry", "integrator", "film", "clouds"})
         EXPECT_TRUE(scene.contains(section)) << section;
-    EXPECT_EQ(keys, 60u) << "every key with its value (docs/scene_files.md)";
+    EXPECT_EQ(keys, 77u) << "every key with its value (docs/scene_files.md)";
     EXPECT_EQ(scene["integrator"]["rr_survival"], 0.95);
     EXPECT_EQ(scene["camera"]["position"], nullptr);
 }

@@ -19,6 +19,7 @@
 #include "film/film_output.h"
 #include "lights/light_build.h"
 #include "media/atmosphere_build.h"
+#include "media/cloud_build.h"
 #include "osm/osm_import.h"
 #include "scene/scene.h"
 
@@ -145,6 +146,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     p.scene.night = celestial.night;
     p.scene.sky = skyOf(d.sky);
     buildAtmosphere(p.scene);
+    buildClouds(p.scene, cloudLayerOf(d.clouds));
     buildLights(p.scene);
     p.secondsBvh = secondsSince(t0);
     return p;  // and the mesh here: the scene holds every triangle in its own order

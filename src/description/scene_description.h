@@ -7,6 +7,7 @@
 #include "citygen/city_mesher.h"
 #include "scene/geometry_modes.h"
 #include "film/film_layers.h"
+#include "scene/cloud_layer.h"
 #include "scene/sky.h"
 #include "math/vec.h"
 
@@ -142,6 +143,12 @@ struct FilmDescription {
     bool denoise = false;              ///< the AOV-guided denoiser on the HDR film before it is written (docs/film.md)
 };
 
+/// The cloud layer (scene/cloud_layer.h, docs/clouds.md): coverage 0 (the default) makes none.
+struct CloudsDescription {
+    CloudLayer layer;
+    std::string type = "cumulus";   ///< one of kCloudTypes
+};
+
 struct SceneDescription {
     SourceDescription source;
     CameraDescription camera;
@@ -153,6 +160,7 @@ struct SceneDescription {
     GeometryDescription geometry;
     IntegratorDescription integrator;
     FilmDescription film;
+    CloudsDescription clouds;
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.
@@ -161,5 +169,7 @@ inline constexpr const char* kLightSamplers[] = {"uniform", "power", "bvh", "col
 inline constexpr const char* kTrafficSides[] = {"auto", "right", "left"};
 /// The choices of SkyDescription::model.
 inline constexpr const char* kSkyModels[] = {"atmosphere", "analytic"};
+/// The choices of CloudsDescription::type, in CloudType order.
+inline constexpr const char* kCloudTypes[] = {"cumulus", "stratus", "uniform"};
 
 } // namespace urbis

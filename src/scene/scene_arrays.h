@@ -4,6 +4,7 @@
 #pragma once
 
 #include "accel/bvh_node.h"
+#include "scene/cloud_layer.h"
 #include "scene/light_records.h"
 #include "scene/material.h"
 #include "scene/prim_kinds.h"
@@ -33,7 +34,11 @@
     X(float, skyTable, "sky_table")                    \
     X(Vec3f, transmittanceLut, "transmittance_lut")    \
     X(Vec3f, multiScatteringLut, "multiscattering_lut") \
-    X(Vec3f, skyViewLut, "sky_view_lut")
+    X(Vec3f, skyViewLut, "sky_view_lut")               \
+    X(CloudLayer, cloudLayers, "cloud_layers")         \
+    X(CloudNoiseTexel, cloudNoise, "cloud_noise")      \
+    X(float, cloudCoverage, "cloud_coverage")          \
+    X(float, cloudMajorants, "cloud_majorants")
 
 namespace urbis {
 
