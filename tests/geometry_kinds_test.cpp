@@ -149,7 +149,7 @@ TEST(SceneArrays, MemoryListsEveryArrayOnce) {
         sum += bytes;
         ++arrays;
     });
-    EXPECT_EQ(arrays, 21u);   // the four kinds' records, triangle info, nodes, materials, road segments, the ten light arrays and the atmosphere's three tables
+    EXPECT_EQ(arrays, 25u);   // the four kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the clouds' layer and three tables
     EXPECT_EQ(sum, memory.total());
     EXPECT_EQ(memory.grounds, sizeof(GroundRecord));
     EXPECT_EQ(memory.walls, scene.walls.size() * sizeof(WallRecord));

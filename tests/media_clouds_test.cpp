@@ -5,6 +5,7 @@
 
 #include "cpu/cpu_renderer.h"
 #include "math/constants.h"
+#include "math/hash.h"
 #include "media/cloud_build.h"
 #include "media/cloud_scattering.h"
 #include "scene/camera_framing.h"
