@@ -180,13 +180,14 @@ TEST(Clouds, PhaseFunctionIsNormalisedAndSampled) {
     EXPECT_GT(outcome.pValue, 0.001) << outcome.message;
 }
 
-// The tracking is unbiased only if no density exceeds its cell's majorant: 200,000 random points of
-// cumulus and stratus layers; and more coverage covers more of the layer's middle, none nothing.
+// The tracking is unbiased only if no density exceeds its cell's and band's majorant: 200,000 random
+// points of cumulus layers of coverage 0.3, 0.7 and 1 and of a stratus layer of 0.7; and more
+// coverage covers more of the cumulus layer's middle, none nothing.
 TEST(Clouds, DensityStaysUnderItsMajorants) {
     double covered[3] = {};
     const float coverages[3] = {0.3f, 0.7f, 1.0f};
     for (CloudType type : {CloudType::Cumulus, CloudType::Stratus})
-        for (int k = 0; k < 3; ++k) {
+        for (int k = type == CloudType::Cumulus ? 0 : 1; k < (type == CloudType::Cumulus ? 3 : 2); ++k) {
             CloudLayer layer;
             layer.type = type;
             layer.coverage = coverages[k];
@@ -197,23 +198,23 @@ TEST(Clouds, DensityStaysUnderItsMajorants) {
             const CloudLayer& built = view.cloudLayers[0];
             const CloudTables tables = cloudTables(view);
             HashStream rng{uint32_t(k) + 10u * uint32_t(type)};
-            uint32_t inside = 0;
+            uint32_t inside = 0, clouded = 0;
             for (int i = 0; i < 200000; ++i) {
                 const Vec3f p{(rng.uniform() - 0.5f) * 60000.0f, 1400.0f + rng.uniform() * 2700.0f, (rng.uniform() - 0.5f) * 60000.0f};
                 const float density = cloudDensity(built, tables, p, p.y);
                 const Vec3f q = p - built.wind;
-                const float majorant = tables.majorants[tiledTexel(int32_t(std::floor(q.x / built.coverageCell)),
-                                                                   int32_t(std::floor(q.z / built.coverageCell)), 0,
-                                                                   int32_t(kCloudCoverageSize))];
+                const float h = (p.y - built.bottom) / built.thickness;
+                const float majorant = cloudMajorant(built, tables.majorants, int32_t(std::floor(q.x / built.coverageCell)),
+                                                     int32_t(std::floor(q.z / built.coverageCell)),
+                                                     int32_t(std::floor(h * kCloudBands)));
                 ASSERT_LE(density, majorant) << "at " << p.x << ", " << p.y << ", " << p.z;
                 ASSERT_GE(density, 0.0f);
-                const float h = (p.y - built.bottom) / built.thickness;
                 if (std::hypot(p.x, p.z) < 20000.0f && h > 0.3f && h < 0.5f) {
                     ++inside;
-                    covered[k] += density > 0.0f;
+                    clouded += density > 0.0f;
                 }
             }
-            covered[k] /= inside;
+            if (type == CloudType::Cumulus) covered[k] = double(clouded) / inside;
         }
     EXPECT_LT(covered[0], covered[1]);
     EXPECT_LT(covered[1], covered[2]);
@@ -235,23 +236,32 @@ TEST(Clouds, NoiseIsDeterministic) {
 
 namespace {
 
-/// The mean radiance of a 32 x 24 view of a 400 m Lambertian plane (albedo 0.5) from 10 m up,
-/// under a black sky and a sun at 35 degrees, beneath `layer` (none where its coverage is 0).
-double meanGroundRadiance(const CloudLayer& layer, uint32_t spp) {
+constexpr float kSunElevation = 35.0f, kSunAzimuth = 120.0f;
+
+/// A 400 m Lambertian plane (albedo 0.5) about `centre` under a black sky and a sun at 35 degrees,
+/// beneath `layer` (none where its coverage is 0).
+Scene groundScene(const CloudLayer& layer, Vec3f centre) {
     TriangleMesh mesh;
     const float h = 200.0f;
-    const Vec3f a{-h, 0, -h}, b{h, 0, -h}, c{h, 0, h}, d{-h, 0, h};
+    const Vec3f a = centre + Vec3f{-h, 0, -h}, b = centre + Vec3f{h, 0, -h}, c = centre + Vec3f{h, 0, h},
+                d = centre + Vec3f{-h, 0, h};
     mesh.add({a, d, c}, {0, 0});
     mesh.add({a, c, b}, {0, 0});
     Scene scene = Scene::build(mesh, {Material{Vec3f{0.5f, 0.5f, 0.5f}}});
     scene.sky = Sky::uniform(Vec3f{});
-    scene.sun = makeSun(35.0f, 120.0f, 0.27f, Vec3f{3.0f, 3.0f, 3.0f});
+    scene.sun = makeSun(kSunElevation, kSunAzimuth, 0.27f, Vec3f{3.0f, 3.0f, 3.0f});
     buildClouds(scene, layer);
+    return scene;
+}
+
+/// The mean luminance of a 32 x 24 view of the plane of groundScene from 10 m above `centre`.
+double meanGroundRadiance(const CloudLayer& layer, Vec3f centre, uint32_t spp) {
+    const Scene scene = groundScene(layer, centre);
     RenderSettings settings;
     settings.width = 32;
     settings.height = 24;
     settings.spp = spp;
-    const Camera camera = cameraFromHeading(Vec3f{0, 10, 0}, 200.0f, -50.0f, 40.0f, 32.0f / 24.0f);
+    const Camera camera = cameraFromHeading(centre + Vec3f{0, 10, 0}, 200.0f, -50.0f, 40.0f, 32.0f / 24.0f);
     RenderCounters counters;
     const LinearImage image = renderCpu(scene.view(), camera, settings, false, counters);
     double sum = 0;
@@ -263,18 +273,37 @@ double meanGroundRadiance(const CloudLayer& layer, uint32_t spp) {
 
 // Clouds darken the ground in their shadow: under a purely absorbing homogeneous slab of optical
 // depth 0.6 straight up, the sunlit plane keeps exp(-0.6 / sin 35 deg) = 0.351 of its radiance (the
-// mean of 49,152 binary shadow estimates, whose standard error is 0.0022: within 0.01); under cumulus
-// of coverage 0.7 it keeps less than without clouds.
+// mean of 49,152 binary shadow estimates, whose standard error is 0.0022: within 0.01). Under cumulus
+// of coverage 0.7, where the clouds' mean transmittance towards the sun is below 0.2 (the first such
+// point along a line of the ground), the ground keeps less than 0.6 of its clear radiance though the
+// clouds scatter light down to it; where it is above 0.9, more than 0.9.
 TEST(Clouds, CloudsDarkenTheGroundInTheirShadow) {
     CloudLayer none;
     none.coverage = 0.0f;
-    const double clear = meanGroundRadiance(none, 64);
+    const double clear = meanGroundRadiance(none, Vec3f{}, 64);
     ASSERT_GT(clear, 0.1);
-    const double slab = meanGroundRadiance(uniformSlab(0.002f, 1000.0f, 300.0f, 0.0f), 64);
-    const double expected = std::exp(-0.6 / std::sin(35.0 * kPi / 180.0));
+    const double slab = meanGroundRadiance(uniformSlab(0.002f, 1000.0f, 300.0f, 0.0f), Vec3f{}, 64);
+    const double expected = std::exp(-0.6 / std::sin(kSunElevation * kPi / 180.0));
     EXPECT_NEAR(slab / clear, expected, 0.01) << "ratio " << slab / clear;
+
     CloudLayer cumulus;
     cumulus.coverage = 0.7f;
-    const double clouded = meanGroundRadiance(cumulus, 16);
-    EXPECT_LT(clouded, 0.95 * clear) << "clear " << clear << ", clouded " << clouded;
+    const Scene probe = groundScene(cumulus, Vec3f{});
+    const SceneView view = probe.view();
+    const Vec3f toSun = probe.sun.direction;
+    Vec3f shadowed{}, lit{};
+    bool foundShadow = false, foundLight = false;
+    for (int i = 0; i < 200 && !(foundShadow && foundLight); ++i) {
+        const Vec3f p{-10000.0f + 100.0f * float(i), 0.0f, 0.0f};
+        const auto [T, error] = meanAndError(64, [&](uint32_t k) {
+            SampleStream rng{9, uint32_t(i), k};
+            return cloudTransmittance(view, Ray{p, toSun}, CloudOctaves{}, rng);
+        });
+        if (!foundShadow && T < 0.2) shadowed = p, foundShadow = true;
+        if (!foundLight && T > 0.9) lit = p, foundLight = true;
+    }
+    ASSERT_TRUE(foundShadow && foundLight) << "no cloud shadow or no gap along 20 km of ground";
+    const double inShadow = meanGroundRadiance(cumulus, shadowed, 16), inGap = meanGroundRadiance(cumulus, lit, 16);
+    EXPECT_LT(inShadow, 0.6 * clear) << "clear " << clear << ", in the shadow " << inShadow;
+    EXPECT_GT(inGap, 0.9 * clear) << "clear " << clear << ", in a gap " << inGap;
 }

@@ -37,11 +37,32 @@ URBIS_HD inline float smoothRamp(float lo, float hi, float x) {
     return t * t * (3.0f - 2.0f * t);
 }
 
+/// Where the altitude profile of `type` is 1 (heights within the layer): it rises from 0 at the
+/// bottom to the plateau's start and falls from its end to 0 at the top.
+URBIS_HD inline Vec2f cloudPlateau(CloudType type) {
+    return type == CloudType::Cumulus ? Vec2f{0.08f, 0.3f} : Vec2f{0.15f, 0.65f};
+}
+
 /// The altitude profile of `type` at `h`, the height within the layer (0 at its bottom, 1 at its top):
 /// cumulus swell fast above a flat base and narrow towards their tops; stratus fill the layer.
 URBIS_HD inline float cloudProfile(CloudType type, float h) {
-    if (type == CloudType::Cumulus) return smoothRamp(0.0f, 0.08f, h) * (1.0f - smoothRamp(0.3f, 1.0f, h));
-    return smoothRamp(0.0f, 0.15f, h) * (1.0f - smoothRamp(0.65f, 1.0f, h));
+    const Vec2f plateau = cloudPlateau(type);
+    return smoothRamp(0.0f, plateau.x, h) * (1.0f - smoothRamp(plateau.y, 1.0f, h));
+}
+
+/// Bands of the layer's height over each of which the tracking bounds the profile by its largest value.
+inline constexpr int32_t kCloudBands = 8;
+
+/// The largest value of the altitude profile of `type` over band `band` (clamped to the bands): 1
+/// where the band meets the plateau, else the larger of its ends (the profile only rises, then
+/// falls); 1 for a Uniform layer, which has no profile.
+URBIS_HD inline float cloudProfileBound(CloudType type, int32_t band) {
+    if (type == CloudType::Uniform) return 1.0f;
+    band = band < 0 ? 0 : (band >= kCloudBands ? kCloudBands - 1 : band);
+    const float h0 = float(band) / float(kCloudBands), h1 = float(band + 1) / float(kCloudBands);
+    const Vec2f plateau = cloudPlateau(type);
+    if (h1 >= plateau.x && h0 <= plateau.y) return 1.0f;
+    return fmaxf(cloudProfile(type, h0), cloudProfile(type, h1));
 }
 
 /// Index of texel (x, y, z) of a tiling table `n` texels a side (x fastest), any integers.
@@ -88,7 +109,7 @@ URBIS_HD inline float cloudFade(const CloudLayer& layer, Vec3f position) {
 /// along the ground, y up; the layer's wind moves the pattern) and `altitude` (metres above the
 /// ground: the altitude profile reads it). The world's flat layer passes position.y as the
 /// altitude; a shell around a planet passes a point's local frame and its height above the surface.
-/// Never more than the majorant of its coverage cell (cloudMajorants).
+/// Never more than cloudMajorant of its cell and band.
 URBIS_HD inline float cloudDensity(const CloudLayer& layer, const CloudTables& tables, Vec3f position, float altitude) {
     const float h = (altitude - layer.bottom) / layer.thickness;
     if (!(h > 0.0f && h < 1.0f)) return 0.0f;
@@ -108,6 +129,13 @@ URBIS_HD inline float cloudDensity(const CloudLayer& layer, const CloudTables& t
     // Erosion: where the base is thin (the edges), the detail noise eats it; the core keeps its density.
     const float detail = cloudNoiseAt(tables.noise, u * 7.31f).detail;
     return layer.density * fade * remapClamped(base, 0.35f * detail, 1.0f);
+}
+
+/// The majorant (per metre) of the tracking in coverage cell (ix, iz) (any integers: the field tiles)
+/// and height band `band`: the cell's (cloudMajorants) times the profile's bound over the band. The
+/// density never exceeds the profile (its ramp from 1 - coverage is below it), so neither the majorant.
+URBIS_HD inline float cloudMajorant(const CloudLayer& layer, ArrayView<float> majorants, int32_t ix, int32_t iz, int32_t band) {
+    return majorants[tiledTexel(ix, iz, 0, int32_t(kCloudCoverageSize))] * cloudProfileBound(layer.type, band);
 }
 
 } // namespace urbis

@@ -2,7 +2,7 @@
 // where a path's ray collides with a droplet, ratio tracking estimates a shadow ray's transmittance
 // (Woodcock et al. 1965; Novák, Selle and Jarosz, "Residual Ratio Tracking for Estimating Attenuation
 // in Participating Media", SIGGRAPH Asia 2014, § 3-4). The majorant is per coverage cell
-// (cloudMajorants): a 2D walk over the cells the ray crosses (Amanatides and Woo 1987) skips the
+// and height band (cloudMajorant): a walk over the cells the ray crosses (Amanatides and Woo 1987) skips the
 // cloudless ones and restarts the exponential steps at each cell's edge, which the exponential's
 // memorylessness allows.
 #pragma once
@@ -41,32 +41,43 @@ URBIS_HD inline bool clipToCloudLayer(const CloudLayer& layer, Vec3f origin, Vec
     return t0 < t1;
 }
 
+/// One axis of the walk over cells: the cell the ray is in, and where it crosses into the next.
+struct CloudWalkAxis {
+    int32_t index, step;
+    float next, delta;   ///< metres along the ray: the next crossing, and between crossings
+
+    /// The axis of coordinate `x` (in cells) at distance t0, changing by `dx` cells per metre.
+    URBIS_HD static CloudWalkAxis at(float x, float dx, float t0) {
+        const float inf = 3.0e38f;
+        const int32_t i = int32_t(floorf(x));
+        return {i, dx > 0.0f ? 1 : -1, dx != 0.0f ? t0 + (float(i + (dx > 0.0f)) - x) / dx : inf,
+                dx != 0.0f ? 1.0f / fabsf(dx) : inf};
+    }
+    URBIS_HD void advance() {
+        index += step;
+        next += delta;
+    }
+};
+
 /// Calls visit(ta, tb, majorant) for each piece [ta, tb] of [t0, t1] (metres along the unit `dir`)
-/// in one coverage cell of nonzero majorant, in order along the ray, until visit returns false.
+/// in one coverage cell and height band of nonzero majorant (cloudMajorant), in order along the ray,
+/// until visit returns false: a 3D DDA (Amanatides and Woo 1987) over the cells and the bands.
 template <typename Visit>
 URBIS_HD inline void forEachCloudCell(const CloudLayer& layer, ArrayView<float> majorants, Vec3f origin, Vec3f dir,
                                       float t0, float t1, Visit&& visit) {
-    const int32_t n = int32_t(kCloudCoverageSize);
-    const float cell = layer.coverageCell;
-    const float x = (origin.x - layer.wind.x + dir.x * t0) / cell, z = (origin.z - layer.wind.z + dir.z * t0) / cell;
-    int32_t ix = int32_t(floorf(x)), iz = int32_t(floorf(z));
-    const int32_t stepX = dir.x > 0.0f ? 1 : -1, stepZ = dir.z > 0.0f ? 1 : -1;
-    const float inf = 3.0e38f;
-    const float deltaX = dir.x != 0.0f ? cell / fabsf(dir.x) : inf, deltaZ = dir.z != 0.0f ? cell / fabsf(dir.z) : inf;
-    float nextX = dir.x != 0.0f ? t0 + (float(ix + (dir.x > 0.0f)) - x) * cell / dir.x : inf;
-    float nextZ = dir.z != 0.0f ? t0 + (float(iz + (dir.z > 0.0f)) - z) * cell / dir.z : inf;
+    const float cell = layer.coverageCell, band = layer.thickness / float(kCloudBands);
+    const Vec3f start = origin + dir * t0;
+    CloudWalkAxis x = CloudWalkAxis::at((start.x - layer.wind.x) / cell, dir.x / cell, t0);
+    CloudWalkAxis y = CloudWalkAxis::at((start.y - layer.bottom) / band, dir.y / band, t0);
+    CloudWalkAxis z = CloudWalkAxis::at((start.z - layer.wind.z) / cell, dir.z / cell, t0);
     for (float t = t0; t < t1;) {
-        const float end = fminf(t1, fminf(nextX, nextZ));
-        const float majorant = majorants[tiledTexel(ix, iz, 0, n)];
+        const float end = fminf(t1, fminf(x.next, fminf(y.next, z.next)));
+        const float majorant = cloudMajorant(layer, majorants, x.index, z.index, y.index);
         if (majorant > 0.0f && !visit(t, end, majorant)) return;
         t = end;
-        if (nextX < nextZ) {
-            ix += stepX;
-            nextX += deltaX;
-        } else {
-            iz += stepZ;
-            nextZ += deltaZ;
-        }
+        if (x.next <= y.next && x.next <= z.next) x.advance();
+        else if (y.next <= z.next) y.advance();
+        else z.advance();
     }
 }
 

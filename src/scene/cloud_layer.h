@@ -34,10 +34,10 @@ struct CloudLayer {
     CloudType type = CloudType::Cumulus;
     float bottom = 1500;         ///< metres above the world's y = 0
     float thickness = 2500;      ///< metres
-    float density = 0.04f;       ///< extinction per metre where the cloud is densest
+    float density = 0.02f;       ///< extinction per metre where the cloud is densest
     float albedo = 0.99f;        ///< single-scattering albedo (water droplets barely absorb)
     float scale = 6000;          ///< metres of one period of the shape noise (its heaps are a quarter of it)
-    float radius = 40000;        ///< metres from the world's origin over which the layer fades out
+    float radius = 30000;        ///< metres from the world's origin over which the layer fades out
     Vec3f wind;                  ///< metres the clouds have moved: the noise is read at position - wind
     uint32_t seed = 1;
     float forwardG = 0.8f;       ///< Henyey-Greenstein g of the forward lobe
