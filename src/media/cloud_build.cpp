@@ -54,12 +54,13 @@ std::vector<float> buildCloudCoverage(const CloudLayer& layer) {
     if (layer.type == CloudType::Uniform) return field;
     for (uint32_t z = 0; z < n; ++z)
         for (uint32_t x = 0; x < n; ++x)
-            field[size_t(z) * n + x] = tiledPerlinFbm(Vec3f{float(x), 0.0f, float(z)} / float(n), 4, 4, hash2(layer.seed, 4));
+            field[size_t(z) * n + x] = tiledPerlinFbm(Vec3f{float(x), 0.0f, float(z)} / float(n), 8, 3, hash2(layer.seed, 4));
     rankInPlace(field);
-    // The weather: the coverage varies around its mean by up to its distance from 0 or 1, so that
-    // there are clearer and cloudier regions, none at 0 and overcast at 1.
-    const float spread = std::min(layer.coverage, 1.0f - layer.coverage);
-    for (float& c : field) c = std::clamp(layer.coverage + (2.0f * c - 1.0f) * spread, 0.0f, 1.0f);
+    // Where the heaps stand (Schneider 2015's weather map): the share `coverage` of the ground, the
+    // texels of the highest ranks, has coverage, rising from 0 at the heaps' edges to 1 over a ramp of
+    // ranks that is widest at middling coverage (round heaps) and vanishes at 1 (overcast).
+    const float c = layer.coverage, ramp = 0.7f * c * (1.0f - c) + 0.02f;
+    for (float& r : field) r = std::clamp((r - (1.0f - c)) / ramp, 0.0f, 1.0f);
     return field;
 }
 

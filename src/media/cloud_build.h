@@ -16,8 +16,9 @@ namespace urbis {
 std::vector<CloudNoiseTexel> buildCloudNoise(uint32_t seed);
 
 /// The coverage field of `layer` (its coverage, type and seed): kCloudCoverageSize^2 texels of the
-/// local coverage in [0, 1] over the layer's (x, z), tiling. Its fBm is ranked as the shape is, so
-/// that about the share layer.coverage of the sky holds clouds; a Uniform layer's is its coverage everywhere.
+/// local coverage in [0, 1] over the layer's (x, z), tiling: where the heaps stand. Its Perlin fBm
+/// is ranked as the shape is, so that the share layer.coverage of the ground lies under clouds; a
+/// Uniform layer's is its coverage everywhere.
 std::vector<float> buildCloudCoverage(const CloudLayer& layer);
 
 /// The majorant (per metre) of each coverage cell: layer.density where any corner of the cell has

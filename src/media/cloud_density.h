@@ -118,12 +118,13 @@ URBIS_HD inline float cloudDensity(const CloudLayer& layer, const CloudTables& t
     if (!(coverage > 0.0f)) return 0.0f;
     const float fade = cloudFade(layer, position);
     if (layer.type == CloudType::Uniform) return layer.density * coverage * fade;
-    // Stratus: the same noise flattened fourfold, so its shapes spread as sheets.
-    const float squash = layer.type == CloudType::Stratus ? 4.0f : 1.0f;
-    const Vec3f u{q.x / layer.scale, q.y * squash / layer.scale, q.z / layer.scale};
+    // Stratus spread twice as wide.
+    const Vec3f u = q / (layer.type == CloudType::Stratus ? 2.0f * layer.scale : layer.scale);
     const float shape = cloudNoiseAt(tables.noise, u).shape;
-    // The coverage is the share of the shape noise's range that is cloud (the shape is uniform in
-    // [0, 1]): the base density ramps from 0 at the threshold 1 - coverage to 1 at the noise's top.
+    // The local coverage is the share of the shape noise's range that is cloud (the shape is uniform
+    // in [0, 1]): the base density ramps from 0 at the threshold 1 - coverage to 1 at the noise's top.
+    // Where the field rises towards a heap's middle, the threshold falls and the profile lets the
+    // cloud reach higher: a dome over a flat base.
     const float base = remapClamped(shape * cloudProfile(layer.type, h), 1.0f - coverage, 1.0f);
     if (!(base > 0.0f)) return 0.0f;
     // Erosion: where the base is thin (the edges), the detail noise eats it; the core keeps its density.
