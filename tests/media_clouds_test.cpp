@@ -274,9 +274,9 @@ double meanGroundRadiance(const CloudLayer& layer, Vec3f centre, uint32_t spp) {
 // Clouds darken the ground in their shadow: under a purely absorbing homogeneous slab of optical
 // depth 0.6 straight up, the sunlit plane keeps exp(-0.6 / sin 35 deg) = 0.351 of its radiance (the
 // mean of 49,152 binary shadow estimates, whose standard error is 0.0022: within 0.01). Under cumulus
-// of coverage 0.7, where the clouds' mean transmittance towards the sun is below 0.2 (the first such
+// of coverage 0.5, where the clouds' mean transmittance towards the sun is below 0.2 (the first such
 // point along a line of the ground), the ground keeps less than 0.6 of its clear radiance though the
-// clouds scatter light down to it; where it is above 0.9, more than 0.9.
+// clouds scatter light down to it; where it is above 0.8, more than 0.8.
 TEST(Clouds, CloudsDarkenTheGroundInTheirShadow) {
     CloudLayer none;
     none.coverage = 0.0f;
@@ -287,23 +287,23 @@ TEST(Clouds, CloudsDarkenTheGroundInTheirShadow) {
     EXPECT_NEAR(slab / clear, expected, 0.01) << "ratio " << slab / clear;
 
     CloudLayer cumulus;
-    cumulus.coverage = 0.7f;
+    cumulus.coverage = 0.5f;
     const Scene probe = groundScene(cumulus, Vec3f{});
     const SceneView view = probe.view();
     const Vec3f toSun = probe.sun.direction;
     Vec3f shadowed{}, lit{};
     bool foundShadow = false, foundLight = false;
-    for (int i = 0; i < 200 && !(foundShadow && foundLight); ++i) {
-        const Vec3f p{-10000.0f + 100.0f * float(i), 0.0f, 0.0f};
+    for (int i = 0; i < 400 && !(foundShadow && foundLight); ++i) {
+        const Vec3f p{-10000.0f + 50.0f * float(i), 0.0f, -5000.0f + 25.0f * float(i)};
         const auto [T, error] = meanAndError(64, [&](uint32_t k) {
             SampleStream rng{9, uint32_t(i), k};
             return cloudTransmittance(view, Ray{p, toSun}, CloudOctaves{}, rng);
         });
         if (!foundShadow && T < 0.2) shadowed = p, foundShadow = true;
-        if (!foundLight && T > 0.9) lit = p, foundLight = true;
+        if (!foundLight && T > 0.8) lit = p, foundLight = true;
     }
-    ASSERT_TRUE(foundShadow && foundLight) << "no cloud shadow or no gap along 20 km of ground";
+    ASSERT_TRUE(foundShadow && foundLight) << "shadow " << foundShadow << ", gap " << foundLight << " along 22 km of ground";
     const double inShadow = meanGroundRadiance(cumulus, shadowed, 16), inGap = meanGroundRadiance(cumulus, lit, 16);
     EXPECT_LT(inShadow, 0.6 * clear) << "clear " << clear << ", in the shadow " << inShadow;
-    EXPECT_GT(inGap, 0.9 * clear) << "clear " << clear << ", in a gap " << inGap;
+    EXPECT_GT(inGap, 0.8 * clear) << "clear " << clear << ", in a gap " << inGap;
 }
