@@ -69,9 +69,9 @@ TEST(CliSceneFile, SavedSceneOfTheDefaultCommandHasEveryKey) {
         ASSERT_TRUE(fields.is_object()) << section;
         for (const auto& [key, value] : fields.items()) keys += 1 + (value.is_object() ? value.size() : 0);
     }
-    for (const char* section : {"source", "camera", "sun", "astronomy", "sky", "materials", "geometry", "integrator", "film", "terrain", "water", "trees"})
+    for (const char* section : {"source", "camera", "sun", "astronomy", "sky", "materials", "geometry", "integrator", "film", "terrain", "water", "trees", "clouds"})
         EXPECT_TRUE(scene.contains(section)) << section;
-    EXPECT_EQ(keys, 119u) << "every key with its value (docs/scene_files.md)";
+    EXPECT_EQ(keys, 136u) << "every key with its value (docs/scene_files.md)";
     EXPECT_EQ(scene["integrator"]["rr_survival"], 0.95);
     EXPECT_EQ(scene["camera"]["position"], nullptr);
 }

@@ -88,7 +88,11 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "integrator", "integrator.kind", "integrator.spp", "integrator.seed", "integrator.max_depth",
         "integrator.rr_depth", "integrator.rr_survival", "integrator.light_sampler", "integrator.light_samples",
         "film", "film.width", "film.height", "film.exposure", "film.output", "film.layers", "film.exr_float", "film.denoise",
-        "photons", "photons.per_pass", "photons.radius", "photons.alpha", "photons.texel", "photons.level_distance", "planet"};
+        "photons", "photons.per_pass", "photons.radius", "photons.alpha", "photons.texel", "photons.level_distance", "planet",
+        "clouds", "clouds.coverage", "clouds.type", "clouds.altitude", "clouds.thickness", "clouds.density",
+        "clouds.albedo", "clouds.scale", "clouds.radius", "clouds.wind", "clouds.seed", "clouds.phase_forward",
+        "clouds.phase_backward", "clouds.phase_blend", "clouds.octaves", "clouds.octave_scattering",
+        "clouds.octave_extinction", "clouds.octave_anisotropy"};
     EXPECT_EQ(keys, expected);
     // The geographic camera's own keys, once it is set.
     SceneDescription geo;

@@ -155,7 +155,7 @@ TEST(SceneArrays, MemoryListsEveryArrayOnce) {
         sum += bytes;
         ++arrays;
     });
-    EXPECT_EQ(arrays, 25u);   // the seven kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples
+    EXPECT_EQ(arrays, 29u);   // the seven kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples, the clouds' layer and three tables
     EXPECT_EQ(sum, memory.total());
     EXPECT_EQ(memory.grounds, sizeof(GroundRecord));
     EXPECT_EQ(memory.walls, scene.walls.size() * sizeof(WallRecord));

@@ -49,7 +49,7 @@ void addBenchCommand(CLI::App& app, BenchCommandLine& line) {
     line.scene.addOptions(*cmd, {"--osm", "--buildings", "--bbox", "--width", "--height", "--spp", "--seed", "--time", "--location", "--sun",
                                  "--camera", "--camera-geo", "--geometry", "--no-streets", "--sky", "--no-aerial-perspective",
                                  "--terrain", "--dem", "--terrain-march",
-                                 "--planet", "--camera-orbit", "--fov"});
+                                 "--planet", "--camera-orbit", "--fov", "--clouds"});
     cmd->add_option("--device", r.device, "cuda, cpu, or auto")->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
     cmd->add_option("--threads", r.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
     cmd->add_option("--repeats", o.repeats, "Timed runs per measurement (0: 20 on the GPU, 3 on the CPU)")->check(CLI::Range(0, 10000))->capture_default_str();

@@ -21,6 +21,7 @@
 #include "film/film_output.h"
 #include "lights/light_build.h"
 #include "media/atmosphere_build.h"
+#include "media/cloud_build.h"
 #include "osm/osm_import.h"
 #include "scene/scene.h"
 
@@ -153,6 +154,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     p.scene.night = celestial.night;
     p.scene.sky = skyOf(d.sky);
     buildAtmosphere(p.scene);
+    buildClouds(p.scene, cloudLayerOf(d.clouds));
     buildLights(p.scene);
     p.secondsBvh = secondsSince(t0);
     p.framingPieces = std::move(mesh.framingPieces);

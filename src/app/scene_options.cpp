@@ -139,6 +139,10 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
     range(bind(cmd, "--sun-radius", v.sun.angularRadius, "Angular radius of the sun, degrees",
                [](SceneDescription& d, float r) { d.sun.angularRadius = r; }),
           0.01, 20.0);
+    range(bind(cmd, "--clouds", v.clouds.layer.coverage,
+               "Cloud coverage, 0 (none) to 1 (overcast); the layer's other parameters are the scene file's `clouds`",
+               [](SceneDescription& d, float c) { d.clouds.layer.coverage = c; }),
+          0.0, 1.0);
 
     // geometry
     text_.geometry = "procedural";

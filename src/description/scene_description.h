@@ -8,6 +8,7 @@
 #include "description/planet_description.h"
 #include "scene/geometry_modes.h"
 #include "film/film_layers.h"
+#include "scene/cloud_layer.h"
 #include "scene/sky.h"
 #include "math/vec.h"
 #include "terrain/terrain_params.h"
@@ -154,6 +155,12 @@ struct FilmDescription {
     bool denoise = false;              ///< the AOV-guided denoiser on the HDR film before it is written (docs/film.md)
 };
 
+/// The cloud layer (scene/cloud_layer.h, docs/clouds.md): coverage 0 (the default) makes none.
+struct CloudsDescription {
+    CloudLayer layer;
+    std::string type = "cumulus";   ///< one of kCloudTypes
+};
+
 struct SceneDescription {
     SourceDescription source;
     CameraDescription camera;
@@ -170,6 +177,7 @@ struct SceneDescription {
     TreeOptions trees;   ///< where trees are filled in, their sizes, crowns and colours (nature/tree_options.h)
     PhotonsDescription photons;
     std::optional<PlanetDescription> planet;  ///< a whole planet instead of the city (docs/planets.md)
+    CloudsDescription clouds;
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.
@@ -178,5 +186,7 @@ inline constexpr const char* kLightSamplers[] = {"uniform", "power", "bvh", "col
 inline constexpr const char* kTrafficSides[] = {"auto", "right", "left"};
 /// The choices of SkyDescription::model.
 inline constexpr const char* kSkyModels[] = {"atmosphere", "analytic"};
+/// The choices of CloudsDescription::type, in CloudType order.
+inline constexpr const char* kCloudTypes[] = {"cumulus", "stratus", "uniform"};
 
 } // namespace urbis

@@ -166,6 +166,26 @@ void visitSceneFields(Description& d, Visitor& v) {
             v.number("pitch", p.camera.pitch, -90.0f, 90.0f);
         });
     });
+    v.object("clouds", [&] {
+        auto& c = d.clouds.layer;
+        v.number("coverage", c.coverage, 0.0f, 1.0f);
+        v.choice("type", d.clouds.type, std::span(kCloudTypes));
+        v.number("altitude", c.bottom, -500.0f, 20000.0f);
+        v.number("thickness", c.thickness, 10.0f, 20000.0f);
+        v.number("density", c.density, 1e-6f, 10.0f);
+        v.number("albedo", c.albedo, 0.0f, 1.0f);
+        v.number("scale", c.scale, 100.0f, 1e6f);
+        v.number("radius", c.radius, 100.0f, 1e7f);
+        v.vec3("wind", c.wind, -1e7f, 1e7f);
+        v.number("seed", c.seed, 0u, UINT32_MAX);
+        v.number("phase_forward", c.forwardG, 0.0f, 0.99f);
+        v.number("phase_backward", c.backwardG, -0.99f, 0.0f);
+        v.number("phase_blend", c.forwardWeight, 0.0f, 1.0f);
+        v.number("octaves", c.octaves, 1u, kCloudMaxOctaves);
+        v.number("octave_scattering", c.octaveScattering, 0.0f, 1.0f);
+        v.number("octave_extinction", c.octaveExtinction, 0.0f, 1.0f);
+        v.number("octave_anisotropy", c.octaveAnisotropy, 0.0f, 1.0f);
+    });
 }
 
 } // namespace urbis

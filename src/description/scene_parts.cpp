@@ -6,7 +6,9 @@
 #include "osm/geo_projection.h"
 #include "scene/camera_framing.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace urbis {
 
@@ -113,6 +115,12 @@ Camera cameraOf(const CameraDescription& camera, float aspect, const GeoOrigin& 
         return cameraFromHeading(Vec3f{float(local.x), g.altitude, float(-local.y)}, g.heading, g.pitch, camera.fov, aspect);
     }
     return frameCity(framingPieces, camera.fov, aspect);
+}
+
+CloudLayer cloudLayerOf(const CloudsDescription& clouds) {
+    CloudLayer layer = clouds.layer;
+    layer.type = CloudType(std::find(std::begin(kCloudTypes), std::end(kCloudTypes), clouds.type) - std::begin(kCloudTypes));
+    return layer;
 }
 
 } // namespace urbis

@@ -32,6 +32,8 @@ Sun sunOf(const SunDescription& sun);
 /// 360), 5 before it rises in the east.
 float hourOf(const SceneDescription& d);
 Sky skyOf(const SkyDescription& sky);
+/// The cloud layer the description asks for (its type from the name).
+CloudLayer cloudLayerOf(const CloudsDescription& clouds);
 
 /// The per-frame settings of the integrator on a film of that size.
 RenderSettings renderSettingsOf(const IntegratorDescription& integrator, const FilmDescription& film);

@@ -13,6 +13,8 @@
 #include "lights/mis.h"
 #include "lights/star_field.h"
 #include "media/planet_atmosphere.h"
+#include "media/aerial_perspective.h"
+#include "media/cloud_scattering.h"
 #include "scene/render_settings.h"
 
 namespace urbis {
@@ -39,6 +41,7 @@ struct PathVertex {
     Vec3f throughput;            ///< of the path up to this vertex
     uint32_t material = 0;
     bool bsdfStrategy = false;   ///< whether the path samples its BSDF here (not at maxDepth): MIS counts it
+    bool inCloud = false;        ///< a cloud's droplet: its phase function scatters (media/cloud_scattering.h)
 };
 
 /// Where the light samples of `vertex` are drawn from, for the light sampler: also where the pick
@@ -134,9 +137,10 @@ URBIS_HD inline Ray shadowRayTowards(Vec3f origin, const LightSample& ls) {
 }
 
 /// One light sample from `vertex`: the shadow ray towards the light and what it adds if nothing
-/// blocks it. Returns false when it adds nothing (then no ray is traced).
+/// blocks it, times the clouds' transmittance of `octaves`. Returns false when it adds nothing (then
+/// no ray is traced).
 URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSettings& settings, const PathVertex& vertex,
-                                     SampleStream& rng, Ray& shadow, Vec3f& contribution) {
+                                     SampleStream& rng, Ray& shadow, Vec3f& contribution, CloudOctaves& octaves) {
     // Numbers are drawn only where they choose something (each draw is a hash): the light where
     // there is more than one, the triangle of a surface or the window of a wall, the point of anything but a lamp.
     const float uLight = lightCount(scene.lights) > 1 ? rng.draw() : 0.0f;
@@ -151,7 +155,14 @@ URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSetting
     if (!sampleLight(scene, light, vertex.origin, u0, u1, u2, ls)) return false;
     const Material& material = scene.materials[vertex.material];
     float pdfBsdf;
-    const Vec3f fCos = evalBsdf(material, vertex.wo, ls.dir, vertex.normal, pdfBsdf);
+    Vec3f fCos{1, 1, 1};
+    octaves = CloudOctaves{};
+    if (vertex.inCloud) {  // the phase function (its value is its pdf) goes with the octaves' weights
+        octaves = cloudLightOctaves(scene.cloudLayers[0], -dot(ls.dir, vertex.wo), !vertex.bsdfStrategy);
+        pdfBsdf = octaves.weight[0];
+    } else {
+        fCos = evalBsdf(material, vertex.wo, ls.dir, vertex.normal, pdfBsdf);
+    }
     const float lightPdf = pmf * ls.pdf;
     if (!(maxComponent(fCos) > 0.0f) || !(lightPdf > 0.0f)) return false;
     const float weight = vertex.bsdfStrategy ? lightSampleWeight(light.kind, settings.lightSamples, lightPdf, pdfBsdf) : 1.0f;
@@ -159,6 +170,15 @@ URBIS_HD inline bool sampleShadowRay(const SceneView& scene, const RenderSetting
     if (!(maxComponent(contribution) > 0.0f)) return false;
     shadow = shadowRayTowards(vertex.origin, ls);
     return true;
+}
+
+/// Russian roulette for the path of `depth` vertices going on with `throughput` (divided by the
+/// survival probability where it survives); true unless it is lost.
+URBIS_HD inline bool survivesRoulette(uint32_t depth, const RenderSettings& settings, Vec3f& throughput, SampleStream& rng) {
+    if (depth + 1 < settings.rrDepth) return true;
+    const float survival = fminf(maxComponent(throughput), settings.rrSurvival);
+    throughput *= 1.0f / survival;
+    return rng.draw() < survival;
 }
 
 /// Traces the path of sample `sampleIndex` through pixel (px, py); pure function of its arguments.
@@ -176,6 +196,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
     PathVertex vertex;
     Ray ray = pathRay;
     Vec3f shadowContribution;       // what the shadow ray in flight adds if nothing blocks it
+    CloudOctaves shadowOctaves;     // and how the clouds' transmittance weighs it
     bool tracingShadow = false, pathEnds = false;
     uint32_t lightSamplesLeft = 0;
     const LightsView& lights = scene.lights;
@@ -184,7 +205,26 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
         const SurfaceHit hit = traceScene(scene, ray, tracingShadow);
         ++out.rays;
         if (tracingShadow) {
-            if (!hit.valid()) out.radiance += shadowContribution;
+            if (!hit.valid()) out.radiance += shadowContribution * cloudTransmittance(scene, ray, shadowOctaves, rng);
+        } else if (float tCloud; cloudCollision(scene, ray, hit.valid() ? hit.t : ray.tmax, rng, tCloud)) {
+            // A droplet of a cloud before any surface: the path scatters there by the phase function.
+            applyAerialPerspective(scene, ray, tCloud, throughput, out.radiance);
+            const CloudLayer& layer = scene.cloudLayers[0];
+            const Vec3f dir = normalize(ray.dir);
+            throughput *= layer.albedo;
+            vertex = PathVertex{ray.origin + ray.dir * tCloud, Vec3f{}, -dir, throughput, 0, depth + 1 < settings.maxDepth, true};
+            lightSamplesLeft = settings.lightSamples;
+            bool goesOn = vertex.bsdfStrategy;
+            if (goesOn) {
+                const CloudPhase phase = cloudPhase(layer);
+                const float uLobe = rng.draw(), u1 = rng.draw(), u2 = rng.draw();
+                const Vec3f next = sampleCloudPhase(phase, dir, uLobe, u1, u2);
+                bounce = BounceInfo{cloudPhaseValue(phase, dot(dir, next)), false, false, lightContext(vertex)};
+                goesOn = survivesRoulette(depth, settings, throughput, rng);
+                pathRay = Ray{vertex.origin, next};
+            }
+            pathEnds = !goesOn;
+            depth += goesOn;
         } else if (!hit.valid()) {
             throughput *= water.transmittance(3.0e38f);   // below a water's surface nothing comes from afar
             // The sky, and the sun's disk: found by BSDF sampling, weighed against light sampling
@@ -228,6 +268,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             vertex.wo = -dir;
             vertex.throughput = throughput;
             vertex.material = hit.material;
+            vertex.inCloud = false;
             const bool scatters = !isSpecular(material);
             // The path goes on unless it is deep enough, is absorbed or loses the Russian roulette.
             BsdfSample bsdf;
@@ -247,11 +288,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             if (goesOn) {
                 throughput *= bsdf.weight;
                 bounce = bounceAfter(bounce, vertex, material, bsdf);
-                if (depth + 1 >= settings.rrDepth) {
-                    float survival = fminf(maxComponent(throughput), settings.rrSurvival);
-                    goesOn = rng.draw() < survival;
-                    throughput *= 1.0f / survival;
-                }
+                goesOn = survivesRoulette(depth, settings, throughput, rng);
             }
             lightSamplesLeft = scatters ? settings.lightSamples : 0;
             pathEnds = !goesOn;
@@ -264,7 +301,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
         tracingShadow = false;
         while (lightSamplesLeft > 0 && !tracingShadow) {
             --lightSamplesLeft;
-            tracingShadow = sampleShadowRay(scene, settings, vertex, rng, ray, shadowContribution);
+            tracingShadow = sampleShadowRay(scene, settings, vertex, rng, ray, shadowContribution, shadowOctaves);
         }
         if (tracingShadow) continue;
         if (pathEnds) break;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "accel/bvh_node.h"
+#include "scene/cloud_layer.h"
 #include "scene/light_records.h"
 #include "scene/material.h"
 #include "scene/prim_kinds.h"
@@ -37,7 +38,11 @@
     X(TerrainRecord, terrains, "terrain_records")      \
     X(float, terrainData, "terrain")                  \
     X(TreeRecord, trees, "trees")                     \
-    X(PlanetRecord, planets, "planets")
+    X(PlanetRecord, planets, "planets")                \
+    X(CloudLayer, cloudLayers, "cloud_layers")         \
+    X(CloudNoiseTexel, cloudNoise, "cloud_noise")      \
+    X(float, cloudCoverage, "cloud_coverage")          \
+    X(float, cloudMajorants, "cloud_majorants")
 
 namespace urbis {
 
