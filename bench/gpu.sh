@@ -42,7 +42,7 @@ status=0
 if [[ $STEPS == *,build,* ]]; then
   say build
   run nvidia-smi --query-gpu=name,memory.total,clocks.sm,clocks.max.sm --format=csv
-  run cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$ROOT/usr" -DURBIS_BUILD_BENCH=OFF \
+  run cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$ROOT/usr" -DURBIS_BUILD_BENCH=OFF -DURBIS_GDAL=OFF \
       -DURBIS_CUDA_RESOURCE_USAGE=ON -DCMAKE_CUDA_FLAGS="${URBIS_CUDA_FLAGS:-}" \
       "${EXPAT_ARGS[@]}" || exit 1
   run cmake --build "$BUILD" -j"$JOBS" || exit 1

@@ -27,3 +27,16 @@ SF_STREET=(--osm "$DATA/sf_downtown_2023.osm.pbf" --camera-geo -122.3940,37.7950
     --out "$OUT/sf_night.png"
 "$URBIS" render --time 2024-10-15T21:00+02:00 --exposure 10 --light-sampler bvh --width 960 --height 540 --spp 2048 --denoise \
     --out "$OUT/generated_night.png"
+"$URBIS" render --planet --camera-orbit 12000,25,10 --width 960 --height 540 --spp 64 --out "$OUT/planet_orbit.png"
+"$URBIS" render --osm "$DATA/sf_downtown_2023.osm.pbf" --camera-geo -122.3950,37.7950,35,300,-20 --fov 60 --width 960 \
+    --height 540 --spp 256 --out "$OUT/sf_park_trees.png"
+"$URBIS" render --scene docs/examples/forest_clouds.json --buildings 200 --width 960 --height 540 --spp 512 --denoise \
+    --out "$OUT/forest_clouds.png"
+# San Francisco on its DEM: DEM names a .vrt of the two osmnx tiles (GDAL; the GPU machine's binaries lack it).
+if [[ -n ${DEM:-} ]]; then
+  "$URBIS" render --osm "$DATA/sf_downtown_2023.osm.pbf" --dem "$DEM" --camera-geo -122.3935,37.7952,260,270,-14 --fov 60 \
+      --width 960 --height 540 --spp 64 --out "$OUT/sf_dem.png"
+fi
+STREET=(--camera 8,1.7,45,-4,0.5,-20 --fov 70 --width 960 --height 540 --time 2024-06-21T13:00+02:00)
+"$URBIS" render "${STREET[@]}" --integrator photon-buffers --max-depth 1 --spp 64 --out "$OUT/photons_street_direct.png"
+"$URBIS" render "${STREET[@]}" --integrator photon-buffers --spp 64 --out "$OUT/photons_street_buffers.png"

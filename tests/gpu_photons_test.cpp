@@ -65,8 +65,9 @@ TEST(GpuPhotons, CpuAndGpuAgreeOnTheStreetCanyon) {
         EXPECT_LT(blockDifference(gpuImage, cpuImage), 0.06) << name;
         EXPECT_EQ(gpuTimings.blocksWithMemory, cpuTimings.blocksWithMemory) << name;
         EXPECT_EQ(gpuTimings.texels, cpuTimings.texels) << name;
-        if (kind == IntegratorKind::PhotonMap)
+        if (kind == IntegratorKind::PhotonMap) {
             EXPECT_NEAR(double(gpuTimings.stored) / double(cpuTimings.stored), 1.0, 0.02) << name;
+        }
         std::printf("%s: mean luminance cpu %.5f gpu %.5f, block difference %.4f; camera pass cpu %.3f s gpu %.4f s\n", name,
                     meanLuminance(cpuImage), meanLuminance(gpuImage), blockDifference(gpuImage, cpuImage), cpuTimings.camera,
                     gpuTimings.camera);

@@ -94,9 +94,11 @@ URBIS_HD inline PathSample photonCameraSample(const SceneView& scene, const Came
     for (uint32_t i = 0; i < direct.lightSamples; ++i) {
         Ray shadow;
         Vec3f contribution;
-        if (!sampleShadowRay(scene, direct, vertex, chain.rng, shadow, contribution)) continue;
+        CloudOctaves octaves;
+        if (!sampleShadowRay(scene, direct, vertex, chain.rng, shadow, contribution, octaves)) continue;
         ++out.rays;
-        if (!traceScene(scene, shadow, true).valid()) out.radiance += contribution;
+        if (!traceScene(scene, shadow, true).valid())
+            out.radiance += contribution * cloudTransmittance(scene, shadow, octaves, chain.rng);
     }
     if (settings.integrator == IntegratorKind::PhotonMap)
         out.radiance += end.throughput * gatherPhotons(scene.photons.grid, material, hit.position, hit.normal, end.wo);
