@@ -19,9 +19,11 @@ using namespace urbis;
 // Metric: per-pixel luminance of the linear images. Both backends walk the same tracking on the same
 // sample streams, but every tracking step compares a random number with a density that the GPU's
 // approximate arithmetic (the precision policy, docs/architecture.md) rounds differently, so more
-// paths part ways than without clouds and then differ as independent samples do. Tolerances: the
-// images' mean luminance within 1 %, the mean absolute pixel difference under 5 % of the mean
-// (64 spp: the noise of two independent estimates is about 10 %; most paths stay together).
+// paths part ways than without clouds and then differ as independent samples do (on the H200 the
+// mean absolute pixel difference was 10-12 % of the mean at 64 spp, the means within 0.05 %).
+// Tolerances: the images' mean luminance within 1 %; the mean absolute pixel difference at most
+// 1.15 times that between two CPU renders of independent seeds (the GPU may part ways from the CPU
+// no more than an independent render does).
 namespace {
 
 void expectCloudImagesMatch(bool fromStreet) {
@@ -48,22 +50,25 @@ void expectCloudImagesMatch(bool fromStreet) {
     const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
     std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
     const LinearImage img = gpu->render(camera, settings, gpuCounters);
+    RenderSettings otherSeed = settings;
+    otherSeed.seed = settings.seed + 1;
+    const LinearImage independent = renderCpu(scene.view(), camera, otherSeed, false, cpuCounters);
     ASSERT_EQ(img.pixels.size(), cpu.pixels.size());
-    double sumCpu = 0, sumGpu = 0, sumDiff = 0;
+    double sumCpu = 0, sumGpu = 0, sumDiff = 0, sumNoise = 0;
     for (size_t i = 0; i < cpu.pixels.size(); ++i) {
         const double a = luminance(cpu.pixels[i]), b = luminance(img.pixels[i]);
         ASSERT_TRUE(std::isfinite(b)) << "pixel " << i;
         sumCpu += a;
         sumGpu += b;
         sumDiff += std::fabs(a - b);
+        sumNoise += std::fabs(a - double(luminance(independent.pixels[i])));
     }
     const double n = double(cpu.pixels.size()), mean = sumCpu / n;
-    std::printf("clouds parity (%s): mean luminance cpu %.5f gpu %.5f, mean |diff| %.3g (%.2f%%); rays cpu %llu gpu %llu\n",
-                fromStreet ? "street" : "above", mean, sumGpu / n, sumDiff / n, 100.0 * sumDiff / n / mean,
-                (unsigned long long)cpuCounters.rays, (unsigned long long)gpuCounters.rays);
+    std::printf("clouds parity (%s): mean luminance cpu %.5f gpu %.5f, mean |diff| %.3g (%.2f%%), between CPU seeds %.3g\n",
+                fromStreet ? "street" : "above", mean, sumGpu / n, sumDiff / n, 100.0 * sumDiff / n / mean, sumNoise / n);
     ASSERT_GT(mean, 0.01) << "the image is black";
     EXPECT_NEAR(sumGpu / n, mean, 0.01 * mean);
-    EXPECT_LT(sumDiff / n, 0.05 * mean);
+    EXPECT_LT(sumDiff, 1.15 * sumNoise);
 }
 
 } // namespace
