@@ -92,7 +92,18 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "clouds", "clouds.coverage", "clouds.type", "clouds.altitude", "clouds.thickness", "clouds.density",
         "clouds.albedo", "clouds.scale", "clouds.radius", "clouds.wind", "clouds.seed", "clouds.phase_forward",
         "clouds.phase_backward", "clouds.phase_blend", "clouds.octaves", "clouds.octave_scattering",
-        "clouds.octave_extinction", "clouds.octave_anisotropy"};
+        "clouds.octave_extinction", "clouds.octave_anisotropy",
+        "geometry.trees", "terrain", "terrain.kind", "terrain.dem", "terrain.march", "terrain.interpolation",
+        "terrain.size", "terrain.cell", "terrain.detail", "terrain.fade", "terrain.fbm", "terrain.fbm.seed",
+        "terrain.fbm.octaves", "terrain.fbm.wavelength", "terrain.fbm.amplitude", "terrain.fbm.lacunarity",
+        "terrain.fbm.gain", "terrain.fbm.erosion", "terrain.fbm.warp", "terrain.fbm.offset", "terrain.materials",
+        "terrain.materials.sand_level", "terrain.materials.snow_level", "terrain.materials.rock_slope",
+        "terrain.lei", "terrain.lei.a", "terrain.lei.b", "terrain.lei.c", "terrain.lei.bisections",
+        "terrain.reference_step", "water", "water.max_depth", "water.shelf_width", "water.absorption",
+        "water.bed_albedo", "water.wind_speed", "water.wind_from", "trees", "trees.enabled", "trees.seed",
+        "trees.forest_density", "trees.park_density", "trees.scrub_density", "trees.outer_forest", "trees.clearance",
+        "trees.default_height", "trees.size_variation", "trees.conifer_share", "trees.roughness", "trees.lumps",
+        "trees.season", "trees.bark_albedo", "trees.leaf_albedo", "trees.needle_albedo", "trees.autumn_albedo"};
     EXPECT_EQ(keys, expected);
     // The geographic camera's own keys, once it is set.
     SceneDescription geo;

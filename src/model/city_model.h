@@ -179,6 +179,7 @@ struct Tree {
     bool crownTagged = false;         ///< `diameter_crown` (else by height and shape)
     LeafType leafType = LeafType::Unknown;
     LeafCycle leafCycle = LeafCycle::Unknown;
+    bool inRow = false;               ///< placed along a natural=tree_row way (osmId is the way's)
 };
 
 /// What covers an area of the ground, by the tag that says so (ground_cover in streets/ draws them).

@@ -156,7 +156,8 @@ void FeatureCollector::addTreeRow(const osmium::Way& way) {
     GeoLine line;
     if (!locationsOf(way.nodes(), line)) return;
     // The row's own tags size its trees; they stand a crown apart (8 m when untagged).
-    const Tree tree = treeFromTags(lookupIn(way.tags()), way.id());
+    Tree tree = treeFromTags(lookupIn(way.tags()), way.id());
+    tree.inRow = true;
     for (const LonLat& p : treeRowPoints(line, tree.crownTagged ? std::max(2.0f, tree.crownDiameter) : 8.0))
         out_.trees.emplace_back(tree, p);
 }
