@@ -18,5 +18,5 @@ mkdir -p "$DEPS/debs" "$DEPS/data"
     libopenexr-dev libopenexr-3-1-30 libimath-dev libimath-3-1-29 \
     libstb0 libglfw3 libopengl0 libglvnd0 libx11-6 libx11-data libxcb1 libxau6 libxdmcp6 libbsd0 libmd0)   # urbis view's window
 cp "$VILLAGE/planet_10.068,48.135_10.071,48.137.osm" "$VILLAGE/West-Oakland.osm.bz2" "$DEPS/data/"
-cp "$DATA/sf_downtown_2023.osm.pbf" "$DEPS/data/"
+cp "$DATA/sf_downtown_2023.osm.pbf" "$DATA/london_city_2020.osm.pbf" "$DEPS/data/"
 du -sh "$DEPS"
