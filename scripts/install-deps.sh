@@ -12,7 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev libembree-dev                           # tests, benchmarks, speed reference
   python-osmnx-doc                                                      # a tiny real OSM extract for the tests
   python3                                                               # scripts/check_layers.py (ctest: layers)
-  libgdal-dev                                                           # DEM rasters for the terrain (--dem)
+  libgdal-dev gdal-bin                                                  # DEM rasters for the terrain (--dem); gdalbuildvrt for mosaics
   libglfw3-dev libimgui-dev libgl-dev                                   # the viewer's window (urbis view)
   xvfb xauth libgl1-mesa-dri                                            # the viewer's tests: a display without a screen
 )
