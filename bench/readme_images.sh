@@ -35,7 +35,7 @@ SF_STREET=(--osm "$DATA/sf_downtown_2023.osm.pbf" --camera-geo -122.3940,37.7950
 # San Francisco on its DEM: DEM names a .vrt of the two osmnx tiles (GDAL; the GPU machine's binaries lack it).
 if [[ -n ${DEM:-} ]]; then
   "$URBIS" render --osm "$DATA/sf_downtown_2023.osm.pbf" --dem "$DEM" --camera-geo -122.3935,37.7952,260,270,-14 --fov 60 \
-      --width 960 --height 540 --spp 64 --out "$OUT/sf_dem.png"
+      --width 640 --height 360 --spp 8 --denoise --out "$OUT/sf_dem.png"
 fi
 STREET=(--camera 8,1.7,45,-4,0.5,-20 --fov 70 --width 960 --height 540 --time 2024-06-21T13:00+02:00)
 "$URBIS" render "${STREET[@]}" --integrator photon-buffers --max-depth 1 --spp 64 --out "$OUT/photons_street_direct.png"
