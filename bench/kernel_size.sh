@@ -16,4 +16,9 @@ for line in sys.stdin:
         name = next((k for k in ("renderKernel", "aovKernel", "closestKernel", "occludedKernel") if k in m.group(1)), m.group(1))
         costly = re.search(r"ILb([01])E", m.group(1))
         if costly: name += {"1": "<costly leaves>", "0": "<no costly leaves>"}[costly.group(1)]
+        features = re.search(r"ILj([0-9]+)E", m.group(1))   # the render kernel per scene content (gpu/render_variants.h)
+        if features:
+            bits = int(features.group(1))
+            name += "<" + "+".join(n for i, n in enumerate(("triangle", "wall", "ground", "lamp", "terrain", "tree",
+                                                             "planet", "clouds", "photons")) if bits >> i & 1) + ">"
         print(f"{name:24s} {int(m.group(2), 16) // 16:6d} instructions")'

@@ -3,11 +3,9 @@
 // 2 m above the ground (camera-relative coordinates at the surface), by day and at sunset.
 #include "gpu_test_support.h"
 
-#include "cpu/cpu_renderer.h"
 #include "planet/planet_build.h"
 
-#include <algorithm>
-#include <cmath>
+#include <cstdio>
 
 using namespace urbis;
 
@@ -39,29 +37,12 @@ void expectPlanetImagesMatch(double altitudeKm, float pitch, float sunElevation)
     const Scene scene = buildPlanetScene(pl, {0.01f, 0.03f, 0.07f}, makeSun(sunElevation, 250.0f, 0.27f, {3.3f, 3.1f, 2.8f}),
                                          NightSky{}, planetSky(sky, pl, 1.0f));
     const Camera camera = planetCamera(placement, float(settings.width) / float(settings.height));
-
-    RenderCounters cpuCounters, gpuCounters;
-    const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
-    std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
-    const LinearImage img = gpu->render(camera, settings, gpuCounters);
-    ASSERT_EQ(img.pixels.size(), cpu.pixels.size());
-    double sum = 0, sumDiff = 0;
-    size_t off = 0;
-    for (size_t i = 0; i < cpu.pixels.size(); ++i) {
-        const double a = luminance(cpu.pixels[i]), b = luminance(img.pixels[i]);
-        ASSERT_TRUE(std::isfinite(b)) << "pixel " << i;
-        sum += a;
-        sumDiff += std::fabs(a - b);
-        off += std::fabs(a - b) > 0.1 * std::max(a, 1e-6);
-    }
-    const double n = double(cpu.pixels.size()), mean = sum / n;
-    std::printf("planet parity (%.3f km up, pitch %.0f, sun %.0f): mean luminance %.5f, mean |diff| %.3g (%.3f%%), %zu of "
-                "%zu pixels off by > 10%%; rays cpu %llu gpu %llu\n",
-                altitudeKm, double(pitch), double(sunElevation), mean, sumDiff / n, 100.0 * sumDiff / n / mean, off,
-                cpu.pixels.size(), (unsigned long long)cpuCounters.rays, (unsigned long long)gpuCounters.rays);
-    ASSERT_GT(mean, 1e-4) << "the image is black";
-    EXPECT_LT(sumDiff / n, 0.02 * mean);
-    EXPECT_LE(double(off), 0.02 * n);
+    char label[96];
+    std::snprintf(label, sizeof label, "planet (%.3f km up, pitch %.0f, sun %.0f)", altitudeKm, double(pitch), double(sunElevation));
+    LinearImage cpu, gpu;
+    const test::LuminanceParity parity = test::renderOnBoth(scene, camera, settings, label, cpu, gpu, 0.1);
+    ASSERT_GT(parity.mean, 1e-4) << "the image is black";
+    test::expectParity(parity, 0.02, 0.02);
 }
 
 } // namespace

@@ -35,23 +35,10 @@ std::vector<Ray> raysOver(const Bounds3f& b, uint32_t count) {
 }
 
 void expectSameHits(const Scene& scene, const std::vector<Ray>& rays) {
-    std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
-    const std::vector<SurfaceHit> g = gpu->intersect(rays);
-    const std::vector<uint8_t> gBlocked = gpu->occluded(rays);
-    const SceneView view = scene.view();
-    size_t terrainHits = 0, differ = 0, occlusion = 0;
-    for (size_t i = 0; i < rays.size(); ++i) {
-        const SurfaceHit c = intersectScene(view, rays[i]);
-        occlusion += gBlocked[i] != uint8_t(occludedScene(view, rays[i]));
-        terrainHits += c.kind == kPrimKindOf<TerrainRecord>;
-        if (c.valid() != g[i].valid() || c.kind != g[i].kind || c.t != g[i].t) {
-            if (differ++ < 5) ADD_FAILURE() << "ray " << i << ": kind " << c.kind << "/" << g[i].kind << " t " << c.t << "/" << g[i].t;
-        }
-    }
-    std::printf("%zu rays, %zu terrain hits\n", rays.size(), terrainHits);
-    EXPECT_EQ(differ, 0u);
-    EXPECT_EQ(occlusion, 0u);
-    EXPECT_GT(terrainHits, rays.size() / 10);
+    const test::HitParity parity = test::traceOnBoth(scene, rays, kPrimKindOf<TerrainRecord>, "terrain");
+    EXPECT_EQ(parity.differ, 0u);
+    EXPECT_EQ(parity.occlusions, 0u);
+    EXPECT_GT(parity.kindHits, rays.size() / 10);
 }
 
 } // namespace

@@ -1,8 +1,10 @@
-// What the GPU tests share: skipping without a usable GPU, and data folders overridable by environment.
+// What the GPU tests share: skipping without a usable GPU, data folders overridable by environment, and
+// the comparisons of images and ray batches between the backends.
 #pragma once
 
 #include "cpu/cpu_renderer.h"
 #include "film/image.h"
+#include "geometry/scene_intersect.h"
 #include "gpu/gpu_backend.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace urbis::test {
 
@@ -32,43 +35,87 @@ inline std::string sanFranciscoFile() { return dataDir("URBIS_SHARED_DATA", URBI
 struct LuminanceParity {
     double mean = 0;       ///< the CPU image's
     double meanDiff = 0;
+    size_t pixels = 0;
+    size_t off = 0;        ///< pixels whose luminance differs by more than the relative bound luminanceParity was given
     bool finite = true;    ///< every GPU pixel finite (and, from renderOnBoth, as many as the CPU's)
 };
 
-inline LuminanceParity luminanceParity(const LinearImage& cpu, const LinearImage& gpu) {
+/// The parity of `gpu` against `cpu`; a pixel is off where it differs by more than `offBy` of the CPU's luminance.
+inline LuminanceParity luminanceParity(const LinearImage& cpu, const LinearImage& gpu, double offBy = 1e-3) {
     LuminanceParity p;
+    p.pixels = cpu.pixels.size();
     for (size_t i = 0; i < cpu.pixels.size() && i < gpu.pixels.size(); ++i) {
         const double a = luminance(cpu.pixels[i]), b = luminance(gpu.pixels[i]);
         p.finite = p.finite && std::isfinite(b);
         p.mean += a / double(cpu.pixels.size());
         p.meanDiff += std::fabs(a - b) / double(cpu.pixels.size());
+        p.off += std::fabs(a - b) > offBy * std::fmax(a, 1e-6);
     }
     return p;
 }
 
-/// Renders `camera`'s view of `scene` on both backends, `width` x `height` at `spp` (the other settings
-/// default), into `cpu` and `gpu`; prints and returns their luminanceParity, under `label`.
+/// Renders `camera`'s view of `scene` with `settings` on both backends into `cpu` and `gpu`; prints and
+/// returns their luminanceParity (pixels off by more than `offBy`), under `label`.
+inline LuminanceParity renderOnBoth(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                                    const char* label, LinearImage& cpu, LinearImage& gpu, double offBy = 1e-3) {
+    RenderCounters cpuCounters, gpuCounters;
+    cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
+    gpu = GpuScene::upload(scene)->render(camera, settings, gpuCounters);
+    LuminanceParity parity = luminanceParity(cpu, gpu, offBy);
+    parity.finite = parity.finite && cpu.pixels.size() == gpu.pixels.size();
+    std::printf("%s parity: mean luminance %.4g, mean |diff| %.3g, %zu of %zu pixels off by > %g; rays cpu %llu gpu %llu\n",
+                label, parity.mean, parity.meanDiff, parity.off, parity.pixels, offBy,
+                (unsigned long long)cpuCounters.rays, (unsigned long long)gpuCounters.rays);
+    return parity;
+}
+
+/// renderOnBoth, `width` x `height` at `spp` (the other settings default).
 inline LuminanceParity renderOnBoth(const Scene& scene, const Camera& camera, uint32_t width, uint32_t height, uint32_t spp,
                                     const char* label, LinearImage& cpu, LinearImage& gpu) {
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
     settings.spp = spp;
-    RenderCounters cpuCounters, gpuCounters;
-    cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
-    gpu = GpuScene::upload(scene)->render(camera, settings, gpuCounters);
-    LuminanceParity parity = luminanceParity(cpu, gpu);
-    parity.finite = parity.finite && cpu.pixels.size() == gpu.pixels.size();
-    std::printf("%s parity: mean luminance %.4g, mean |diff| %.3g\n", label, parity.mean, parity.meanDiff);
-    return parity;
+    return renderOnBoth(scene, camera, settings, label, cpu, gpu);
 }
 
-/// The parity of two images that should agree: finite, not black, and a mean absolute difference under
-/// `tolerance` times the mean luminance.
-inline void expectParity(const LuminanceParity& parity, double tolerance) {
+/// The parity of two images that should agree: finite, not black, a mean absolute difference under
+/// `tolerance` times the mean luminance, and at most `offFraction` of the pixels off.
+inline void expectParity(const LuminanceParity& parity, double tolerance, double offFraction = 1.0) {
     ASSERT_TRUE(parity.finite);
     ASSERT_GT(parity.mean, 0.0);
     EXPECT_LT(parity.meanDiff, tolerance * parity.mean);
+    EXPECT_LE(double(parity.off), offFraction * double(parity.pixels));
+}
+
+/// How the closest hits and occlusions of a ray batch compare between the backends.
+struct HitParity {
+    size_t kindHits = 0;     ///< CPU hits of the kind asked about
+    size_t differ = 0;       ///< rays whose hit differs in validity, kind or distance
+    size_t otherIndex = 0;   ///< rays that hit another record of the same kind at the same distance (a tie)
+    size_t occlusions = 0;   ///< rays whose occlusion differs
+};
+
+/// Traces `rays` through `scene` on both backends (closest hit and occlusion); prints the counts, `kind`'s hits among them.
+inline HitParity traceOnBoth(const Scene& scene, const std::vector<Ray>& rays, uint32_t kind, const char* label) {
+    std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
+    const std::vector<SurfaceHit> gpuHits = gpu->intersect(rays);
+    const std::vector<uint8_t> gpuBlocked = gpu->occluded(rays);
+    const SceneView view = scene.view();
+    HitParity p;
+    for (size_t i = 0; i < rays.size(); ++i) {
+        const SurfaceHit c = intersectScene(view, rays[i]);
+        const SurfaceHit& g = gpuHits[i];
+        p.kindHits += c.kind == kind;
+        const bool same = c.valid() == g.valid() && c.kind == g.kind && c.t == g.t;
+        if (!same && p.differ++ < 5)
+            ADD_FAILURE() << label << " ray " << i << ": kind " << c.kind << "/" << g.kind << " t " << c.t << "/" << g.t;
+        p.otherIndex += same && c.index != g.index;
+        p.occlusions += uint8_t(occludedScene(view, rays[i])) != gpuBlocked[i];
+    }
+    std::printf("%s on both backends: %zu rays, %zu hit the kind, %zu differ, %zu ties, %zu occlusions differ\n", label,
+                rays.size(), p.kindHits, p.differ, p.otherIndex, p.occlusions);
+    return p;
 }
 
 } // namespace urbis::test

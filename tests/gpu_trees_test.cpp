@@ -5,14 +5,10 @@
 
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
-#include "cpu/cpu_renderer.h"
-#include "geometry/scene_intersect.h"
 #include "layout/city_layout.h"
 #include "math/hash.h"
 #include "scene/camera_framing.h"
 #include "tree_test_scenes.h"
-
-#include <cmath>
 
 using namespace urbis;
 
@@ -26,23 +22,11 @@ TEST(GpuTrees, RaysAtAGroveHitTheSameTreeAtTheSameDistance) {
         const Vec3f origin{rng.uniform(-60.0f, 60.0f), rng.uniform(0.5f, 40.0f), rng.uniform(-60.0f, 60.0f)};
         rays.push_back(Ray{origin, target - origin});
     }
-    std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
-    const std::vector<SurfaceHit> gpuHits = gpu->intersect(rays);
-    const std::vector<uint8_t> gpuBlocked = gpu->occluded(rays);
-    const SceneView view = scene.view();
-    size_t treeHits = 0, differ = 0, blockDiffer = 0;
-    for (size_t i = 0; i < rays.size(); ++i) {
-        const SurfaceHit c = intersectScene(view, rays[i]);
-        const SurfaceHit& g = gpuHits[i];
-        treeHits += c.kind == kPrimKindOf<TreeRecord>;
-        differ += c.kind != g.kind || c.index != g.index || c.t != g.t;
-        blockDiffer += uint8_t(occludedScene(view, rays[i])) != gpuBlocked[i];
-    }
-    std::printf("trees on both backends: %zu rays, %zu hit a tree, %zu differ, %zu occlusions differ\n", rays.size(),
-                treeHits, differ, blockDiffer);
-    EXPECT_GT(treeHits, rays.size() / 4);
-    EXPECT_EQ(differ, 0u);
-    EXPECT_EQ(blockDiffer, 0u);
+    const test::HitParity parity = test::traceOnBoth(scene, rays, kPrimKindOf<TreeRecord>, "trees");
+    EXPECT_GT(parity.kindHits, rays.size() / 4);
+    EXPECT_EQ(parity.differ, 0u);
+    EXPECT_EQ(parity.otherIndex, 0u);
+    EXPECT_EQ(parity.occlusions, 0u);
 }
 
 TEST(GpuTrees, GeneratedCityWithTreesMatchesTheCpuAt64Spp) {
@@ -60,23 +44,6 @@ TEST(GpuTrees, GeneratedCityWithTreesMatchesTheCpuAt64Spp) {
     settings.spp = 64;
     settings.seed = 7;
     const Camera camera = frameCity(mesh.cityBounds, 50.0f, float(settings.width) / float(settings.height));
-    RenderCounters cpuCounters, gpuCounters;
-    const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
-    std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
-    const LinearImage img = gpu->render(camera, settings, gpuCounters);
-    ASSERT_EQ(img.pixels.size(), cpu.pixels.size());
-    double sum = 0, sumDiff = 0;
-    size_t off = 0;
-    for (size_t i = 0; i < cpu.pixels.size(); ++i) {
-        const double a = luminance(cpu.pixels[i]), b = luminance(img.pixels[i]);
-        ASSERT_TRUE(std::isfinite(b));
-        sum += a;
-        sumDiff += std::fabs(a - b);
-        off += std::fabs(a - b) > 1e-3 * std::max(a, 1e-6);
-    }
-    const double n = double(cpu.pixels.size()), mean = sum / n;
-    std::printf("city with trees: mean luminance %.5f, mean |diff| %.3g, %zu of %zu pixels off by > 0.1%%\n", mean,
-                sumDiff / n, off, cpu.pixels.size());
-    EXPECT_LT(sumDiff / n, 1e-3 * mean);
-    EXPECT_LE(double(off), 0.01 * n);
+    LinearImage cpu, gpu;
+    test::expectParity(test::renderOnBoth(scene, camera, settings, "city with trees", cpu, gpu), 1e-3, 0.01);
 }

@@ -1,7 +1,9 @@
 // Leaf dispatch over the kinds list (host+device): a leaf slot's kind from SceneView::kindEnd, and
 // a call of f with that kind as a constant: a C++20 fold over the kind indices (as pbrt-v4's
 // TaggedPointer::Dispatch), which compiles to a compare per kind and one inlined copy of each
-// intersector. New kinds join scene/prim_kinds.h and this fold picks them up.
+// intersector; a kind that SceneView::features leaves out is skipped, and where a GPU kernel fixes
+// the features its intersector is not compiled in. New kinds join scene/prim_kinds.h and this fold
+// picks them up.
 #pragma once
 
 #include "geometry/ground_intersect.h"
@@ -39,7 +41,8 @@ inline constexpr uint32_t kLastPassingKind =
 template <KindFilter Filter, typename F, uint32_t... I>
 URBIS_HD inline bool dispatchSlotOver(const SceneView& scene, uint32_t slot, F& f, std::integer_sequence<uint32_t, I...>) {
     bool result = false;
-    (void)((kKindPasses<Filter, I> && (I == kLastPassingKind<Filter> || slot < scene.kindEnd[I]) &&
+    (void)((kKindPasses<Filter, I> && hasFeatures(scene.features, SceneFeatures(1) << I) &&
+            (I == kLastPassingKind<Filter> || slot < scene.kindEnd[I]) &&
             (result = f(PrimKindTag<I>{}, slot - scene.kindStart(I)), true)) ||
            ...);
     return result;

@@ -8,6 +8,7 @@
 #include "gpu/device_event_timer.h"
 #include "gpu/device_scene.h"
 #include "gpu/gpu_photons.h"
+#include "gpu/render_variants.h"
 #include "integrators/aov_sample.h"
 #include "integrators/path_samples.h"
 
@@ -23,22 +24,27 @@ namespace {
 constexpr int kTileX = 8, kTileY = 16;   // 128 threads; each warp covers 8 x 4 pixels
 constexpr int kTraceBlock = 128;
 
-// Each kernel is compiled twice, for scenes with costly leaves (walls) and without: the kernel fixes
-// SceneView::costlyLeaves, so the traversal it does not take is left out (traceScene), and each gets
-// its register budget. Not one per kind: the kinds share both (the leaf dispatch tests whichever a
-// scene holds). Blocks per SM that the render kernel's registers must allow: left free, ptxas took 158
-// registers for the inlined wall part tests, three blocks per SM. With costly leaves four (128
-// registers): the wall code spills least and fewer warps share the instruction cache. Without, five
-// (102 registers): stored triangles ran 14 % slower at four.
+// The render kernel is compiled once per set of kinds and features of gpu/render_variants.h: it
+// fixes SceneView::features and costlyLeaves, so what its set leaves out (the traversal of costly
+// leaves, a kind's intersector, the clouds' tracking, the planet's atmosphere, the photon camera
+// pass) is not in it, and a scene runs the smallest that covers it. The batch kernels are compiled
+// twice, with costly leaves and without. Blocks per SM that the render kernel's registers must
+// allow: left free, ptxas took 158 registers for the inlined wall part tests, three blocks per SM.
+// With costly leaves four (128 registers): the wall code spills least and fewer warps share the
+// instruction cache. Without, five (102 registers): stored triangles ran 14 % slower at four.
 template <bool CostlyLeaves>
 constexpr int kRenderBlocksPerSm = CostlyLeaves ? 4 : 5;
 
-/// One thread per pixel: adds `samples` to the film, in sample order as on the CPU.
-template <bool CostlyLeaves>
-__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<CostlyLeaves>)
+/// One thread per pixel: adds `samples` to the film, in sample order as on the CPU. The scene holds
+/// nothing outside `Features` (renderVariantFor).
+template <SceneFeatures Features>
+__global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<renderVariantHasCostlyLeaves(Features)>)
     renderKernel(SceneView scene, Camera camera, RenderSettings settings, SampleRange samples, FilmView film,
                  unsigned long long* rayCount) {
-    scene.costlyLeaves = CostlyLeaves;   // a constant from here on
+    // Constants from here on.
+    scene.features = Features;
+    scene.costlyLeaves = renderVariantHasCostlyLeaves(Features);
+    if constexpr (!hasFeatures(Features, kPhotonsFeature)) settings.integrator = IntegratorKind::Path;
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     uint32_t rays = 0;
@@ -48,6 +54,16 @@ __global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<CostlyLeav
     unsigned long long total = rays;
     for (int offset = 16; offset > 0; offset /= 2) total += __shfl_down_sync(0xffffffffu, total, offset);
     if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && total > 0) atomicAdd(rayCount, total);
+}
+
+/// Launches the render kernel of variant `variant` (an index into kRenderVariants).
+template <uint32_t... V>
+void launchRenderVariant(uint32_t variant, std::integer_sequence<uint32_t, V...>, dim3 grid, dim3 block,
+                         const SceneView& scene, const Camera& camera, const RenderSettings& settings,
+                         SampleRange samples, const FilmView& film, unsigned long long* rayCount) {
+    (void)((variant == V &&
+            (renderKernel<kRenderVariants[V]><<<grid, block>>>(scene, camera, settings, samples, film, rayCount), true)) ||
+           ...);
 }
 
 /// One thread per pixel: the AOV pass of `samples`, apart from the path tracer's kernel.
@@ -139,7 +155,7 @@ GpuInfo probeGpu() {
     info.multiprocessors = prop.multiProcessorCount;
     // The fat binary holds code for URBIS_CUDA_ARCHITECTURES only: ask whether a kernel loads here.
     cudaFuncAttributes attributes{};
-    status = cudaFuncGetAttributes(&attributes, renderKernel<true>);
+    status = cudaFuncGetAttributes(&attributes, renderKernel<kAllFeatures>);
     if (status != cudaSuccess) {
         info.reason = "CUDA device " + info.name + " (sm_" + std::to_string(prop.major) + std::to_string(prop.minor) +
                       ") cannot run this build's kernels (" + cudaGetErrorString(status) +
@@ -188,10 +204,9 @@ struct GpuScene::Impl {
         SceneView view = scene.view();
         view.photons = photons;
         const FilmView target = filmView();
-        if (view.costlyLeaves)
-            renderKernel<true><<<grid, block>>>(view, camera, settings, samples, target, rayCount.data());
-        else
-            renderKernel<false><<<grid, block>>>(view, camera, settings, samples, target, rayCount.data());
+        const SceneFeatures features = view.features | (settings.integrator == IntegratorKind::Path ? 0 : kPhotonsFeature);
+        launchRenderVariant(renderVariantFor(features), std::make_integer_sequence<uint32_t, kRenderVariantCount>{}, grid,
+                            block, view, camera, settings, samples, target, rayCount.data());
         checkLaunch("renderKernel");
         if (!target.hasAovs()) return;
         aovKernel<<<grid, block>>>(view, camera, settings, samples, target);

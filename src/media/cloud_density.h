@@ -25,7 +25,7 @@ URBIS_HD inline CloudTables cloudTables(const SceneView& scene) {
 
 /// Whether the scene has a cloud layer that makes clouds (its record is cloudLayers[0]).
 URBIS_HD inline bool hasClouds(const SceneView& scene) {
-    return scene.cloudLayers.size > 0 && scene.cloudLayers[0].coverage > 0.0f;
+    return hasFeatures(scene.features, kCloudsFeature) && scene.cloudLayers.size > 0 && scene.cloudLayers[0].coverage > 0.0f;
 }
 
 /// (x - lo) / (hi - lo) clamped to [0, 1].

@@ -17,7 +17,7 @@ inline constexpr uint32_t kPlanetAtmosphereSteps = 32;
 
 /// The scene's planet, or null in a city.
 URBIS_HD inline const PlanetRecord* scenePlanet(const SceneView& scene) {
-    return scene.planets.size ? &scene.planets[0] : nullptr;
+    return hasFeatures(scene.features, kKindFeature<PlanetRecord>) && scene.planets.size ? &scene.planets[0] : nullptr;
 }
 
 /// Height (km) of the world point `p` above the atmosphere's ground sphere (the planet's sea level).

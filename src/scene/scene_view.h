@@ -5,6 +5,7 @@
 #include "scene/scene_arrays.h"
 #include "scene/night_sky.h"
 #include "scene/photon_view.h"
+#include "scene/scene_features.h"
 #include "scene/scene_lights.h"
 #include "scene/sky.h"
 #include "scene/sun.h"
@@ -20,6 +21,9 @@ struct SceneView {
     uint32_t kindEnd[kPrimKindCount] = {};
     /// Whether any leaf is costly (kBvhCostlyLeaf): the traversal then takes the costly leaves' path.
     bool costlyLeaves = false;
+    /// The kinds and features the scene may hold (scene/scene_features.h): a clear bit says it holds
+    /// none of that, so per-ray code skips it; a GPU render kernel sets its own constant superset.
+    SceneFeatures features = kAllFeatures;
     Sun sun;
     Sky sky;
     NightSky night;                      ///< the moon (a disk like the sun) and the stars
@@ -39,12 +43,15 @@ SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky, cons
     URBIS_SCENE_ARRAYS(URBIS_VIEW_ARRAY)
 #undef URBIS_VIEW_ARRAY
     uint32_t end = 0;
+    view.features = 0;
     forEachPrimKind([&](auto kind) {
         const uint32_t count = uint32_t(kindArray<typename decltype(kind)::Record>(arrays).size());
         end += count;
         view.kindEnd[kind.index] = end;
         view.costlyLeaves |= kCostlyKind<kind.index> && count > 0;
+        if (count > 0) view.features |= SceneFeatures(1) << kind.index;
     });
+    if (arrays.cloudLayers.size() > 0) view.features |= kCloudsFeature;   // buildClouds keeps a layer only with coverage
     view.sun = sun;
     view.sky = sky;
     view.night = night;
