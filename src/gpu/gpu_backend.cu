@@ -69,6 +69,7 @@ void launchRenderVariant(uint32_t variant, std::integer_sequence<uint32_t, V...>
 /// One thread per pixel: the AOV pass of `samples`, apart from the path tracer's kernel.
 __global__ void __launch_bounds__(kTileX * kTileY) aovKernel(SceneView scene, Camera camera, RenderSettings settings,
                                                              SampleRange samples, FilmView film) {
+    scene.features = kAllFeatures;   // one kernel for any scene: its tests of the kinds fold away
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     if (x < settings.width && y < settings.height) addAovSamples(scene, camera, settings, x, y, samples, film);
@@ -103,6 +104,7 @@ template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kTraceBlock) closestKernel(SceneView scene, const Ray* rays, SurfaceHit* hits,
                                                             uint32_t count) {
     scene.costlyLeaves = CostlyLeaves;
+    scene.features = kAllFeatures;   // one kernel for any scene: its tests of the kinds fold away
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < count) hits[i] = intersectScene(scene, rays[i]);
 }
@@ -111,6 +113,7 @@ template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kTraceBlock) occludedKernel(SceneView scene, const Ray* rays, uint8_t* blocked,
                                                              uint32_t count) {
     scene.costlyLeaves = CostlyLeaves;
+    scene.features = kAllFeatures;   // one kernel for any scene: its tests of the kinds fold away
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < count) blocked[i] = occludedScene(scene, rays[i]) ? 1 : 0;
 }

@@ -40,6 +40,7 @@ template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kPhotonBlock) photonMapKernel(SceneView scene, RenderSettings settings, Photon* slots,
                                                                 unsigned long long* rayCount) {
     scene.costlyLeaves = CostlyLeaves;
+    scene.features = kAllFeatures;   // one kernel for any scene: its tests of the kinds fold away
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= settings.photonsPerPass) return;
     PhotonSlotSink sink{slots + size_t(i) * settings.maxDepth};
@@ -52,6 +53,7 @@ template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kPhotonBlock) photonSplatKernel(SceneView scene, RenderSettings settings,
                                                                   unsigned long long* rayCount) {
     scene.costlyLeaves = CostlyLeaves;
+    scene.features = kAllFeatures;   // one kernel for any scene: its tests of the kinds fold away
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= settings.photonsPerPass) return;
     PhotonSplatSink sink{scene.photons.buffers};
@@ -64,6 +66,7 @@ template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kTileX * kTileY) photonFlagKernel(SceneView scene, Camera camera, RenderSettings settings,
                                                                     uint32_t sample, uint8_t* seen) {
     scene.costlyLeaves = CostlyLeaves;
+    scene.features = kAllFeatures;   // one kernel for any scene: its tests of the kinds fold away
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
     if (x >= settings.width || y >= settings.height) return;
     const uint32_t block = cameraSampleBlock(scene, camera, settings, x, y, sample);

@@ -35,6 +35,6 @@ constexpr uint32_t renderVariantFor(SceneFeatures features) {
 }
 
 /// Whether a kernel of `features` takes the costly leaves' traversal (SceneView::costlyLeaves).
-constexpr bool renderVariantHasCostlyLeaves(SceneFeatures features) { return (features & kCostlyKindFeatures) != 0; }
+URBIS_HD constexpr bool renderVariantHasCostlyLeaves(SceneFeatures features) { return (features & kCostlyKindFeatures) != 0; }
 
 } // namespace urbis

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "scene/prim_kinds.h"
+#include "urbis.h"
 
 #include <cstdint>
 
