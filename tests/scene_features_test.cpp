@@ -33,6 +33,7 @@ TEST(SceneFeatures, ScenesPickTheKernelsMeantForThem) {
     EXPECT_EQ(kRenderVariants[renderVariantFor(twin.view().features)], kTriangleCityFeatures);
     Scene cloudy = test::groveScene(3, false);
     CloudLayer layer;
+    layer.type = CloudType::Uniform;   // no noise volume to build
     layer.coverage = 0.5f;
     buildClouds(cloudy, layer);
     EXPECT_TRUE(hasFeatures(cloudy.view().features, kCloudsFeature));
