@@ -5,8 +5,9 @@
 # 150 MB) and the OSM extracts that the GPU tests and benchmarks read.
 #   bench/gpu_deps.sh [deps-dir]      (default .deps, git-ignored; carry it to the GPU machine)
 # With GDAL_FOR=BINARY (an urbis built here with GDAL), also the shared libraries that binary needs
-# beyond glibc's and libstdc++, with PROJ's database, as one xz tarball (gdal.tar.xz: GDAL's
-# libraries are 150 MB unpacked, far over the carry's 64 MiB), which deps_root.sh unpacks there, and
+# beyond glibc's and libstdc++, with PROJ's database, as one xz tarball (gdal.tar.xz: GDAL's 108
+# libraries are 157 MB unpacked, far over the carry's 64 MiB; as xz about a third of that, so check the
+# `du -sh` below against the carry with the binaries), which deps_root.sh unpacks there, and
 # the osmnx DEM tiles: so that `--dem` runs on the GPU machine with the binary built here.
 set -eu
 DEPS=${1:-.deps}
