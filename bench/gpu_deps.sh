@@ -4,6 +4,11 @@
 # unpacks them there, so that the carried folder stays small: Boost's headers alone unpack to
 # 150 MB) and the OSM extracts that the GPU tests and benchmarks read.
 #   bench/gpu_deps.sh [deps-dir]      (default .deps, git-ignored; carry it to the GPU machine)
+# With GDAL_FOR=BINARY (an urbis built here with GDAL), also the shared libraries that binary needs
+# beyond glibc's and libstdc++, with PROJ's database, as one xz tarball (gdal.tar.xz: GDAL's 108
+# libraries are 157 MB unpacked, far over the carry's 64 MiB; as xz about a third of that, so check the
+# `du -sh` below against the carry with the binaries), which deps_root.sh unpacks there, and
+# the osmnx DEM tiles: so that `--dem` runs on the GPU machine with the binary built here.
 set -eu
 DEPS=${1:-.deps}
 DATA=${URBIS_DATA:-$(dirname "$0")/../../shared/data}
@@ -19,4 +24,15 @@ mkdir -p "$DEPS/debs" "$DEPS/data"
     libstb0 libglfw3 libopengl0 libglvnd0 libx11-6 libx11-data libxcb1 libxau6 libxdmcp6 libbsd0 libmd0)   # urbis view's window
 cp "$VILLAGE/planet_10.068,48.135_10.071,48.137.osm" "$VILLAGE/West-Oakland.osm.bz2" "$DEPS/data/"
 cp "$DATA/sf_downtown_2023.osm.pbf" "$DATA/london_city_2020.osm.pbf" "$DEPS/data/"
+if [ -n "${GDAL_FOR:-}" ]; then
+  PACK=$(mktemp -d)
+  mkdir -p "$PACK/gdal/lib" "$PACK/gdal/proj"
+  ldd "$GDAL_FOR" | awk '$3 ~ /^\// {print $3}' |
+      grep -vE '/(libc|libm|libstdc\+\+|libgcc_s|libpthread|libdl|librt|ld-linux-x86-64)\.so' |
+      while read -r lib; do cp -L "$lib" "$PACK/gdal/lib/"; done
+  cp /usr/share/proj/proj.db "$PACK/gdal/proj/"
+  tar -C "$PACK" -cf - gdal | xz -6 -T0 > "$DEPS/gdal.tar.xz"
+  rm -rf "$PACK"
+  cp "$VILLAGE/elevation1.tif" "$VILLAGE/elevation2.tif" "$DEPS/data/"
+fi
 du -sh "$DEPS"

@@ -37,6 +37,7 @@ if [[ -n ${DEM:-} ]]; then
   "$URBIS" render --osm "$DATA/sf_downtown_2023.osm.pbf" --dem "$DEM" --camera-geo -122.3935,37.7952,260,270,-14 --fov 60 \
       --width 640 --height 360 --spp 8 --denoise --out "$OUT/sf_dem.png"
 fi
+"$URBIS" render --scene docs/examples/lake_hills.json --width 960 --height 540 --spp 16 --denoise --out "$OUT/lake_hills.png"
 STREET=(--camera 8,1.7,45,-4,0.5,-20 --fov 70 --width 960 --height 540 --time 2024-06-21T13:00+02:00)
 "$URBIS" render "${STREET[@]}" --integrator photon-buffers --max-depth 1 --spp 64 --out "$OUT/photons_street_direct.png"
 "$URBIS" render "${STREET[@]}" --integrator photon-buffers --spp 64 --out "$OUT/photons_street_buffers.png"

@@ -137,7 +137,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
 
         t0 = Clock::now();
         mesh = meshCity(city, meshOptions);
-        terrain = cityTerrainOf(d.terrain, city.origin, mesh);
+        terrain = cityTerrainOf(d.terrain, city.origin, mesh, d.water);
         p.secondsCitygen = secondsSince(t0);
 
         p.camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces);

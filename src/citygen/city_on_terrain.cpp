@@ -44,7 +44,7 @@ void liftStreetTriangle(const Triangle& t, const TerrainField& terrain, float ed
 
 float streetEdgeOnTerrain(const TerrainField& terrain) { return 2.0f * terrain.record.cell; }
 
-void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain) {
+void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const WaterLevels& water) {
     // Each building's box, from its triangles and its walls' bottom edges.
     std::unordered_map<uint32_t, Bounds3f> buildings;   // each building's box
     TriangleMesh& tris = mesh.mesh;
@@ -85,6 +85,19 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain) {
             lift(t.p0, l), lift(t.p1, l), lift(t.p2, l);
             lifted.add(t, info);
             continue;
+        }
+        if (info.part == uint32_t(SurfacePart::Water)) {
+            // A water body with a level lies flat at it, over the terrain that is its bed.
+            if (const auto level = water.find(info.object); level != water.end()) {
+                if (mesh.materials[info.material].kind != MaterialKind::Water) {
+                    --mesh.trianglesByKind["water"];   // the flat ground's bed: the terrain replaces it
+                    continue;
+                }
+                Triangle t = tris.triangles[i];
+                t.p0.y = t.p1.y = t.p2.y = level->second;
+                lifted.add(t, info);
+                continue;
+            }
         }
         // Street surfaces follow the ground vertex by vertex, in pieces short enough to stay on it.
         pieces.clear();

@@ -2,10 +2,22 @@
 
 namespace urbis {
 
+std::vector<GroundRecord> groundAround(const GroundRecord& ground, const Bounds3f& grid) {
+    GroundRecord west = ground, east = ground, north = ground, south = ground;
+    west.x1 = grid.lo.x;
+    east.x0 = grid.hi.x;
+    north.x0 = south.x0 = grid.lo.x;
+    north.x1 = south.x1 = grid.hi.x;
+    north.z1 = grid.lo.z;
+    south.z0 = grid.hi.z;
+    return {west, east, north, south};
+}
+
 Scene buildCityScene(const CityMesh& mesh, WallTileSize tileSize, Vec3f groundCentre, const TerrainField& terrain) {
+    const GroundRecord ground = GroundRecord::around(groundCentre.x, groundCentre.z, 0.0f, mesh.groundMaterial);
     Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, tileSize,
-                               {GroundRecord::around(groundCentre.x, groundCentre.z, 0.0f, mesh.groundMaterial)}, mesh.lamps,
-                               mesh.trees, terrain);
+                               terrain.empty() ? std::vector{ground} : groundAround(ground, primBounds(terrain.record)),
+                               mesh.lamps, mesh.trees, terrain);
     scene.roadSegments = mesh.roadSegments;
     return scene;
 }

@@ -1,11 +1,12 @@
 #include "citygen/city_terrain.h"
 
 #include "citygen/city_on_terrain.h"
+#include "citygen/street_grades.h"
 #include "terrain/terrain_build.h"
 
 namespace urbis {
 
-TerrainField cityTerrainOf(const TerrainParams& params, const GeoOrigin& origin, CityMesh& mesh) {
+TerrainField cityTerrainOf(const TerrainParams& params, const GeoOrigin& origin, CityMesh& mesh, const WaterOptions& water) {
     if (!params.enabled()) return {};
     const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
     TerrainField terrain = buildTerrain(params, origin, centre.x, centre.z, uint32_t(mesh.materials.size()));
@@ -14,7 +15,15 @@ TerrainField cityTerrainOf(const TerrainParams& params, const GeoOrigin& origin,
     if (params.kind != "fbm" && mesh.groundMaterial < mesh.materials.size())
         materials[uint32_t(TerrainMaterial::Grass)] = mesh.materials[mesh.groundMaterial];
     for (const Material& m : materials) mesh.materials.push_back(m);
-    placeCityOnTerrain(mesh, terrain);
+    // Each water body at its level over the terrain, its bed: no flat layer under the surface to pass;
+    // the streets on the natural ground's smooth grade.
+    const std::vector<float> graded = smoothedHeights(terrain, kGradeRadius);
+    const WaterLevels levels = waterLevelsOn(mesh, terrain);
+    carveWaterBeds(terrain, mesh, levels, water);
+    gradeStreets(terrain, mesh, graded);
+    for (Material& m : mesh.materials)
+        if (m.kind == MaterialKind::Water) m.water.skipBelow = 0;
+    placeCityOnTerrain(mesh, terrain, levels);
     return terrain;
 }
 

@@ -15,7 +15,7 @@ float waterSurfaceLevel();
 /// Metres below the ground's plane (y = 0) of the bed at `distance` metres from the shore: a bank
 /// falling as 1 - (1 - t)^2, t = distance / shelfWidth (steep at the shore, level at maxDepth), and
 /// kMinBedDepth at least, so that the bed lies under the ground's plane even at the shore. On a
-/// terrain the bed is the terrain itself and this goes.
+/// terrain the same profile below the water's level is carved into the terrain, its bed (carveWaterBeds).
 float waterBedDepth(double distance, const WaterOptions& options);
 
 /// The bed's depth at the shore, m below the ground's plane.

@@ -1,0 +1,116 @@
+#include "citygen/water_on_terrain.h"
+
+#include "citygen/plane_geometry.h"
+#include "citygen/terrain_samples.h"
+#include "scene/surface_part.h"
+#include "streets/street_levels.h"
+#include "streets/water_depth.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <tuple>
+
+namespace urbis {
+namespace {
+
+/// A shore edge of a water body: its ends' world x and z (y 0).
+struct ShoreEdge {
+    Vec3f a, b;
+};
+
+/// The edges of `surface` that no other of its triangles shares: its outline and holes' (the
+/// triangulation shares its inner edges' vertices bit for bit).
+std::vector<ShoreEdge> shoreOf(const std::vector<Triangle>& surface) {
+    using Key = std::tuple<uint32_t, uint32_t, uint32_t, uint32_t>;
+    std::map<Key, int> uses;
+    auto key = [](Vec3f p, Vec3f q) {
+        Key a{std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.z), std::bit_cast<uint32_t>(q.x),
+              std::bit_cast<uint32_t>(q.z)};
+        Key b{std::get<2>(a), std::get<3>(a), std::get<0>(a), std::get<1>(a)};
+        return std::min(a, b);
+    };
+    for (const Triangle& t : surface)
+        for (const auto& [p, q] : {std::pair{t.p0, t.p1}, std::pair{t.p1, t.p2}, std::pair{t.p2, t.p0}}) ++uses[key(p, q)];
+    std::vector<ShoreEdge> shore;
+    for (const auto& [k, n] : uses)
+        if (n == 1)
+            shore.push_back({{std::bit_cast<float>(std::get<0>(k)), 0, std::bit_cast<float>(std::get<1>(k))},
+                             {std::bit_cast<float>(std::get<2>(k)), 0, std::bit_cast<float>(std::get<3>(k))}});
+    return shore;
+}
+
+} // namespace
+
+std::map<uint32_t, std::vector<Triangle>> waterSurfacesOf(const CityMesh& mesh) {
+    std::map<uint32_t, std::vector<Triangle>> surfaces;
+    const TriangleMesh& tris = mesh.mesh;
+    for (size_t i = 0; i < tris.size(); ++i)
+        if (tris.info[i].part == uint32_t(SurfacePart::Water) && mesh.materials[tris.info[i].material].kind == MaterialKind::Water)
+            surfaces[tris.info[i].object].push_back(tris.triangles[i]);
+    return surfaces;
+}
+
+WaterLevels waterLevelsOn(const CityMesh& mesh, const TerrainField& terrain) {
+    WaterLevels levels;
+    const float step = 0.5f * terrain.record.cell;
+    for (const auto& [object, surface] : waterSurfacesOf(mesh)) {
+        float lowest = INFINITY;
+        for (const ShoreEdge& e : shoreOf(surface)) {
+            const int steps = std::max(1, int(std::ceil(length(e.b - e.a) / step)));
+            for (int k = 0; k <= steps; ++k) {
+                const Vec3f p = e.a + (e.b - e.a) * (float(k) / float(steps));
+                lowest = std::min(lowest, terrain.heightAt(p.x, p.z));
+            }
+        }
+        levels[object] = std::max(kWaterLevel, lowest);
+    }
+    return levels;
+}
+
+void carveWaterBeds(TerrainField& terrain, const CityMesh& mesh, const WaterLevels& levels, const WaterOptions& options) {
+    const TerrainRecord& r = terrain.record;
+    std::vector<float> heights = terrainHeights(terrain);
+    auto samplesIn = [&](float lo, float hi, float origin, uint32_t n, int& first, int& last) {
+        return gridSamplesIn(lo, hi, origin, r.cell, n, first, last);
+    };
+    const float shelf = std::max(options.shelfWidth, 0.0f);
+    for (const auto& [object, surface] : waterSurfacesOf(mesh)) {
+        const float level = levels.at(object);
+        // Distance to the shore of the samples within a shelf of it; farther ones lie at maxDepth.
+        Bounds3f box;
+        for (const Triangle& t : surface) box.extend(primBounds(t));
+        int i0, i1, j0, j1;
+        if (!samplesIn(box.lo.x, box.hi.x, r.x0, r.nx, i0, i1) || !samplesIn(box.lo.z, box.hi.z, r.z0, r.nz, j0, j1)) continue;
+        const int w = i1 - i0 + 1;
+        std::vector<float> distance(size_t(w) * size_t(j1 - j0 + 1), INFINITY);
+        for (const ShoreEdge& e : shoreOf(surface)) {
+            int a0, a1, b0, b1;
+            if (!samplesIn(std::min(e.a.x, e.b.x) - shelf, std::max(e.a.x, e.b.x) + shelf, r.x0, r.nx, a0, a1) ||
+                !samplesIn(std::min(e.a.z, e.b.z) - shelf, std::max(e.a.z, e.b.z) + shelf, r.z0, r.nz, b0, b1))
+                continue;
+            for (int j = std::max(b0, j0); j <= std::min(b1, j1); ++j)
+                for (int i = std::max(a0, i0); i <= std::min(a1, i1); ++i) {
+                    float& d = distance[size_t(j - j0) * w + size_t(i - i0)];
+                    d = std::min(d, planeSegmentDistance(r.x0 + r.cell * float(i), r.z0 + r.cell * float(j), e.a, e.b));
+                }
+        }
+        // Each sample under the surface goes down to the bank's profile below the level.
+        for (const Triangle& t : surface) {
+            const Bounds3f tb = primBounds(t);
+            int a0, a1, b0, b1;
+            if (!samplesIn(tb.lo.x, tb.hi.x, r.x0, r.nx, a0, a1) || !samplesIn(tb.lo.z, tb.hi.z, r.z0, r.nz, b0, b1)) continue;
+            for (int j = b0; j <= b1; ++j)
+                for (int i = a0; i <= a1; ++i) {
+                    const float x = r.x0 + r.cell * float(i), z = r.z0 + r.cell * float(j);
+                    if (!insidePlaneTriangle(t, x, z)) continue;
+                    const float bed = level - waterBedDepth(distance[size_t(j - j0) * w + size_t(i - i0)], options);
+                    float& h = heights[size_t(j) * r.nx + size_t(i)];
+                    h = std::min(h, bed);
+                }
+        }
+    }
+    setTerrainHeights(terrain, std::move(heights));
+}
+
+} // namespace urbis
