@@ -8,22 +8,10 @@
 #   file per run: bench_<variant>_<device>_<round>.json; prints the median frame times and the ratios,
 #   raw and scaled by each run's ray batches (which no change of the atmosphere touches).
 set -uo pipefail
-BUILD=${1:?build folder}
-DEVICE=${2:-cuda}
-WIDTH=${3:-1920}
-HEIGHT=${4:-1080}
-ROUNDS=${5:-3}
-OUT=${OUT:-$PWD/atmosphere-out}
-mkdir -p "$OUT"
-status=0
+source "$(dirname "$0")/bench_variants.sh"
+bench_arguments atmosphere "$@"
 declare -A flags=([aerial]="" [no_aerial]="--no-aerial-perspective" [analytic]="--sky analytic")
-for round in $(seq 1 "$ROUNDS"); do
-  for variant in aerial no_aerial analytic; do
-    # shellcheck disable=SC2086
-    "$BUILD"/urbis bench --device "$DEVICE" --width "$WIDTH" --height "$HEIGHT" --repeats 3 ${flags[$variant]} \
-        --json "$OUT/bench_${variant}_${DEVICE}_${round}.json" > "$OUT/bench_${variant}_${DEVICE}_${round}.log" 2>&1 || status=1
-  done
-done
+bench_variants bench aerial no_aerial analytic
 python3 - "$OUT" "$DEVICE" <<'PY'
 import glob, json, statistics, sys
 out, device = sys.argv[1], sys.argv[2]
@@ -42,4 +30,4 @@ for variant in ("aerial", "no_aerial", "analytic"):
 print(f"aerial / no_aerial {ms['aerial'] / ms['no_aerial']:.3f} (scaled by the ray batches {norm['aerial'] / norm['no_aerial']:.3f})"
       f"   aerial / analytic {ms['aerial'] / ms['analytic']:.3f} (scaled {norm['aerial'] / norm['analytic']:.3f})")
 PY
-exit $status
+exit $bench_status

@@ -6,20 +6,10 @@
 #   DEVICE cuda (default; 1920x1080) or cpu; JSON and logs in $OUT (default ./clouds-out); prints
 #   each coverage's median frame and its ratio to the clear frame.
 set -uo pipefail
-BUILD=${1:?build folder}
-DEVICE=${2:-cuda}
-WIDTH=${3:-1920}
-HEIGHT=${4:-1080}
-ROUNDS=${5:-3}
-OUT=${OUT:-$PWD/clouds-out}
-mkdir -p "$OUT"
-status=0
-for round in $(seq 1 "$ROUNDS"); do
-  for coverage in 0 0.3 0.7 1; do
-    "$BUILD"/urbis bench --device "$DEVICE" --width "$WIDTH" --height "$HEIGHT" --repeats 3 --clouds "$coverage" \
-        --json "$OUT/clouds_${coverage}_${DEVICE}_${round}.json" > "$OUT/clouds_${coverage}_${DEVICE}_${round}.log" 2>&1 || status=1
-  done
-done
+source "$(dirname "$0")/bench_variants.sh"
+bench_arguments clouds "$@"
+declare -A flags=([0]="--clouds 0" [0.3]="--clouds 0.3" [0.7]="--clouds 0.7" [1]="--clouds 1")
+bench_variants clouds 0 0.3 0.7 1
 python3 - "$OUT" "$DEVICE" <<'PY'
 import glob, json, statistics, sys
 out, device = sys.argv[1], sys.argv[2]
@@ -30,4 +20,4 @@ for coverage in ("0", "0.3", "0.7", "1"):
     clear = clear or median
     print(f"--clouds {coverage:4s} frame median {median:9.2f} ms ({median / clear:.2f}x the clear frame) over rounds {[round(f, 1) for f in frames]}")
 PY
-exit $status
+exit $bench_status

@@ -28,6 +28,8 @@ SF_STREET=(--osm "$DATA/sf_downtown_2023.osm.pbf" --camera-geo -122.3940,37.7950
 "$URBIS" render --time 2024-10-15T21:00+02:00 --exposure 10 --light-sampler bvh --width 960 --height 540 --spp 2048 --denoise \
     --out "$OUT/generated_night.png"
 "$URBIS" render --planet --camera-orbit 12000,25,10 --width 960 --height 540 --spp 64 --out "$OUT/planet_orbit.png"
+"$URBIS" render --scene docs/examples/planet_clouds.json --width 640 --height 360 --spp 16 --denoise \
+    --out "$OUT/planet_clouds.png"
 "$URBIS" render --osm "$DATA/sf_downtown_2023.osm.pbf" --camera-geo -122.3950,37.7950,35,300,-20 --fov 60 --width 960 \
     --height 540 --spp 256 --out "$OUT/sf_park_trees.png"
 "$URBIS" render --scene docs/examples/forest_clouds.json --buildings 200 --width 960 --height 540 --spp 512 --denoise \

@@ -99,7 +99,7 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "terrain.fbm.gain", "terrain.fbm.erosion", "terrain.fbm.warp", "terrain.fbm.offset", "terrain.materials",
         "terrain.materials.sand_level", "terrain.materials.snow_level", "terrain.materials.rock_slope",
         "terrain.lei", "terrain.lei.a", "terrain.lei.b", "terrain.lei.c", "terrain.lei.bisections",
-        "terrain.reference_step", "water", "water.max_depth", "water.shelf_width", "water.absorption",
+        "terrain.reference_step", "water", "water.enabled", "water.max_depth", "water.shelf_width", "water.absorption",
         "water.bed_albedo", "water.wind_speed", "water.wind_from", "trees", "trees.enabled", "trees.seed",
         "trees.forest_density", "trees.park_density", "trees.scrub_density", "trees.outer_forest", "trees.clearance",
         "trees.default_height", "trees.size_variation", "trees.conifer_share", "trees.roughness", "trees.lumps",

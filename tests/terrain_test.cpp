@@ -7,6 +7,7 @@
 #include "citygen/city_scene.h"
 #include "geometry/scene_intersect.h"
 #include "math/value_noise.h"
+#include "nature/tree_mesher.h"
 #include "scene/camera.h"
 #include "terrain/dem_raster.h"
 #include "terrain/march_accuracy.h"
@@ -236,4 +237,31 @@ TEST(TerrainCity, ABuildingOnASlopeHasNoGapUnderIt) {
             EXPECT_LT(hit.t, length(Vec3f{from.x, 0, from.z})) << "y " << y;
         }
     EXPECT_GT(rays, 100u);
+}
+
+// A tree's twin on a slope of 1 in 2 rises as a whole by the ground under its trunk's foot, as its
+// record does: every vertex by the same height, no triangle split, the trunk upright (a per-vertex
+// lift, as the streets take, would shear the crown downhill).
+TEST(TerrainCity, ATreeTwinOnASlopeRisesAsAWholeByItsFoot) {
+    std::vector<float> h;
+    for (int j = 0; j < 41; ++j)
+        for (int i = 0; i < 41; ++i) h.push_back(0.5f * (2.0f * i - 40.0f) + 30.0f);
+    const TerrainField field = TerrainField::fromSamples(-40, -40, 2, 41, 41, h);
+    TreeRecord tree;
+    tree.base = {5.0f, 0.0f, 3.0f};
+    tree.object = 7;
+    CityMesh mesh;
+    meshTree(tree, mesh.mesh);
+    const TriangleMesh flat = mesh.mesh;
+    placeCityOnTerrain(mesh, field);
+    ASSERT_EQ(mesh.mesh.size(), flat.size());
+    const float rise = field.heightAt(5.0f, 3.0f);
+    EXPECT_NEAR(rise, 32.5f, 1e-3f);
+    for (size_t i = 0; i < flat.size(); ++i)
+        for (const auto vertex : {&Triangle::p0, &Triangle::p1, &Triangle::p2}) {
+            const Vec3f a = flat.triangles[i].*vertex, b = mesh.mesh.triangles[i].*vertex;
+            EXPECT_EQ(a.x, b.x);
+            EXPECT_EQ(a.z, b.z);
+            EXPECT_NEAR(b.y - a.y, rise, 1e-4f) << "triangle " << i;
+        }
 }

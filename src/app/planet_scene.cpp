@@ -2,6 +2,7 @@
 
 #include "description/celestial_parts.h"
 #include "description/scene_parts.h"
+#include "media/cloud_build.h"
 #include "planet/planet_build.h"
 
 #include <chrono>
@@ -32,6 +33,7 @@ PreparedScene preparePlanetScene(const SceneDescription& d) {
     PreparedScene prepared;
     prepared.scene = buildPlanetScene(record, p.oceanColour, celestial.sun, celestial.night,
                                       planetSky(skyOf(d.sky), record, p.atmosphereScale));
+    buildClouds(prepared.scene, cloudLayerOf(d.clouds));  // the shell around the planet (media/cloud_shell.h)
     prepared.camera = planetCamera(placement, float(d.film.width) / float(d.film.height));
     prepared.summary.source = "planet";
     prepared.secondsBvh = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -9,8 +9,13 @@
 namespace urbis {
 namespace {
 
+/// Whether a triangle of this part belongs to a tree's twin (nature/tree_mesher.h).
+bool isTreePart(uint32_t part) {
+    return part == uint32_t(SurfacePart::TreeTrunk) || part == uint32_t(SurfacePart::TreeCrown);
+}
+
 /// Whether a triangle of this part belongs to the streets (roads to lamps) rather than a building.
-bool isStreetPart(uint32_t part) { return part >= uint32_t(SurfacePart::Road); }
+bool isStreetPart(uint32_t part) { return part >= uint32_t(SurfacePart::Road) && !isTreePart(part); }
 
 /// Vertices this close (metres) to a building's base are its base, and follow the lowest ground.
 constexpr float kBaseTolerance = 0.01f;
@@ -40,6 +45,32 @@ void liftStreetTriangle(const Triangle& t, const TerrainField& terrain, float ed
     liftStreetTriangle({a, b, c}, terrain, edge, out);
 }
 
+/// How far each tree twin (by object) rises: the ground's height under its trunk's foot, the middle of
+/// its lowest vertices (the trunk's bottom ring), so that it stands upright as its record would.
+std::unordered_map<uint32_t, float> treeLifts(const TriangleMesh& tris, const TerrainField& terrain) {
+    std::unordered_map<uint32_t, float> lowest;
+    for (size_t i = 0; i < tris.size(); ++i) {
+        if (!isTreePart(tris.info[i].part)) continue;
+        auto [it, added] = lowest.try_emplace(tris.info[i].object, tris.triangles[i].p0.y);
+        for (const Vec3f p : {tris.triangles[i].p0, tris.triangles[i].p1, tris.triangles[i].p2}) it->second = std::min(it->second, p.y);
+    }
+    struct Foot {
+        double x = 0, z = 0;
+        size_t n = 0;
+    };
+    std::unordered_map<uint32_t, Foot> feet;
+    for (size_t i = 0; i < tris.size(); ++i) {
+        if (!isTreePart(tris.info[i].part)) continue;
+        const uint32_t object = tris.info[i].object;
+        Foot& foot = feet[object];
+        for (const Vec3f p : {tris.triangles[i].p0, tris.triangles[i].p1, tris.triangles[i].p2})
+            if (p.y <= lowest.at(object) + kBaseTolerance) foot.x += p.x, foot.z += p.z, ++foot.n;
+    }
+    std::unordered_map<uint32_t, float> lifts;
+    for (const auto& [object, foot] : feet) lifts[object] = terrain.heightAt(float(foot.x / foot.n), float(foot.z / foot.n));
+    return lifts;
+}
+
 } // namespace
 
 float streetEdgeOnTerrain(const TerrainField& terrain) { return 2.0f * terrain.record.cell; }
@@ -49,7 +80,7 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
     std::unordered_map<uint32_t, Bounds3f> buildings;   // each building's box
     TriangleMesh& tris = mesh.mesh;
     for (size_t i = 0; i < tris.size(); ++i) {
-        if (isStreetPart(tris.info[i].part)) continue;
+        if (isStreetPart(tris.info[i].part) || isTreePart(tris.info[i].part)) continue;
         Bounds3f& box = buildings[tris.info[i].object];
         for (const Vec3f p : {tris.triangles[i].p0, tris.triangles[i].p1, tris.triangles[i].p2}) box.extend(p);
     }
@@ -77,8 +108,16 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
     lifted.info.reserve(tris.size());
     std::vector<Triangle> pieces;
     const float edge = streetEdgeOnTerrain(terrain);
+    const std::unordered_map<uint32_t, float> trees = treeLifts(tris, terrain);
     for (size_t i = 0; i < tris.size(); ++i) {
         const TriangleInfo info = tris.info[i];
+        if (isTreePart(info.part)) {  // a tree twin rises as a whole, as its record does
+            Triangle t = tris.triangles[i];
+            const float dy = trees.at(info.object);
+            t.p0.y += dy, t.p1.y += dy, t.p2.y += dy;
+            lifted.add(t, info);
+            continue;
+        }
         if (!isStreetPart(info.part)) {
             Triangle t = tris.triangles[i];
             const Levels& l = levels.at(info.object);

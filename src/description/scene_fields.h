@@ -115,6 +115,7 @@ void visitSceneFields(Description& d, Visitor& v) {
     });
     v.object("terrain", [&] { visitTerrainFields(d.terrain, v); });
     v.object("water", [&] {
+        v.boolean("enabled", d.water.enabled);
         v.number("max_depth", d.water.maxDepth, 0.0f, 1000.0f);
         v.number("shelf_width", d.water.shelfWidth, 0.0f, 10000.0f);
         v.vec3("absorption", d.water.absorption, 0.0f, 100.0f);

@@ -208,7 +208,7 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
             if (!hit.valid()) out.radiance += shadowContribution * cloudTransmittance(scene, ray, shadowOctaves, rng);
         } else if (float tCloud; cloudCollision(scene, ray, hit.valid() ? hit.t : ray.tmax, rng, tCloud)) {
             // A droplet of a cloud before any surface: the path scatters there by the phase function.
-            applyAerialPerspective(scene, ray, tCloud, throughput, out.radiance);
+            applySegmentMedium(scene, ray, tCloud, throughput, out.radiance);
             const CloudLayer& layer = scene.cloudLayers[0];
             const Vec3f dir = normalize(ray.dir);
             throughput *= layer.albedo;

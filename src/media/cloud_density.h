@@ -105,19 +105,13 @@ URBIS_HD inline float cloudFade(const CloudLayer& layer, Vec3f position) {
     return 1.0f - smoothRamp(0.7f * layer.radius, layer.radius, sqrtf(position.x * position.x + position.z * position.z));
 }
 
-/// Extinction (per metre) of the cloud `layer` at `position` (metres, in the layer's frame: x, z
-/// along the ground, y up; the layer's wind moves the pattern) and `altitude` (metres above the
-/// ground: the altitude profile reads it). The world's flat layer passes position.y as the
-/// altitude; a shell around a planet passes a point's local frame and its height above the surface.
-/// Never more than cloudMajorant of its cell and band.
-URBIS_HD inline float cloudDensity(const CloudLayer& layer, const CloudTables& tables, Vec3f position, float altitude) {
-    const float h = (altitude - layer.bottom) / layer.thickness;
-    if (!(h > 0.0f && h < 1.0f)) return 0.0f;
-    const Vec3f q = position - layer.wind;
-    const float coverage = cloudCoverageAt(layer, tables.coverage, q.x, q.z);
+/// Extinction (per metre) of the cloud `layer` at `q` (metres in the layer's frame, the wind taken
+/// off), the height `h` within the layer (0 at its bottom, 1 at its top) and the local `coverage`
+/// (of the field at q), before any fade. Never more than layer.density.
+URBIS_HD inline float cloudDensityOfCoverage(const CloudLayer& layer, const CloudTables& tables, Vec3f q, float h,
+                                             float coverage) {
     if (!(coverage > 0.0f)) return 0.0f;
-    const float fade = cloudFade(layer, position);
-    if (layer.type == CloudType::Uniform) return layer.density * coverage * fade;
+    if (layer.type == CloudType::Uniform) return layer.density * coverage;
     // Stratus spread twice as wide.
     const Vec3f u = q / (layer.type == CloudType::Stratus ? 2.0f * layer.scale : layer.scale);
     const float shape = cloudNoiseAt(tables.noise, u).shape;
@@ -129,7 +123,21 @@ URBIS_HD inline float cloudDensity(const CloudLayer& layer, const CloudTables& t
     if (!(base > 0.0f)) return 0.0f;
     // Erosion: where the base is thin (the edges), the detail noise eats it; the core keeps its density.
     const float detail = cloudNoiseAt(tables.noise, u * 7.31f).detail;
-    return layer.density * fade * remapClamped(base, 0.35f * detail, 1.0f);
+    return layer.density * remapClamped(base, 0.35f * detail, 1.0f);
+}
+
+/// Extinction (per metre) of the cloud `layer` at `position` (metres, in the layer's frame: x, z
+/// along the ground, y up; the layer's wind moves the pattern) and `altitude` (metres above the
+/// ground: the altitude profile reads it): the world's flat layer, which passes position.y as the
+/// altitude and fades out towards its radius (a planet's shell: media/cloud_shell.h). Never more than
+/// cloudMajorant of its cell and band.
+URBIS_HD inline float cloudDensity(const CloudLayer& layer, const CloudTables& tables, Vec3f position, float altitude) {
+    const float h = (altitude - layer.bottom) / layer.thickness;
+    if (!(h > 0.0f && h < 1.0f)) return 0.0f;
+    const Vec3f q = position - layer.wind;
+    const float coverage = cloudCoverageAt(layer, tables.coverage, q.x, q.z);
+    if (!(coverage > 0.0f)) return 0.0f;
+    return cloudFade(layer, position) * cloudDensityOfCoverage(layer, tables, q, h, coverage);
 }
 
 /// The majorant (per metre) of the tracking in coverage cell (ix, iz) (any integers: the field tiles)

@@ -9,7 +9,7 @@
 
 #include "math/ray.h"
 #include "math/rng.h"
-#include "media/cloud_density.h"
+#include "media/cloud_shell.h"
 
 namespace urbis {
 
@@ -127,27 +127,47 @@ URBIS_HD inline bool ratioTrack(Density&& density, float majorant, float ta, flo
     }
 }
 
+/// Calls visit(ta, tb, majorant, density) for each piece [ta, tb] (metres along the unit `dir` from
+/// `origin`, within [0, tmax]) of the scene's clouds along the ray, in order, until visit returns
+/// false; density(s) is the extinction at origin + s dir. In a city the flat layer's cells and bands
+/// (forEachCloudCell); around a planet the ray's pieces in its shell (media/cloud_shell.h) under
+/// the layer's density, which bounds the shell's everywhere.
+template <typename Visit>
+URBIS_HD inline void forEachCloudPiece(const SceneView& scene, Vec3f origin, Vec3f dir, float tmax, Visit&& visit) {
+    if (!hasClouds(scene)) return;
+    const CloudLayer& layer = scene.cloudLayers[0];
+    const CloudTables tables = cloudTables(scene);
+    if (const PlanetRecord* pl = scenePlanet(scene)) {
+        const auto density = [&](float s) { return cloudShellDensity(layer, tables, *pl, origin + dir * s); };
+        float t0[2], t1[2];
+        const uint32_t n = clipToCloudShell(layer, *pl, origin, dir, tmax, t0, t1);
+        for (uint32_t i = 0; i < n; ++i)
+            if (!visit(t0[i], t1[i], layer.density, density)) return;
+        return;
+    }
+    float t0, t1;
+    if (!clipToCloudLayer(layer, origin, dir, tmax, t0, t1)) return;
+    const auto density = [&](float s) {
+        const Vec3f p = origin + dir * s;
+        return cloudDensity(layer, tables, p, p.y);
+    };
+    forEachCloudCell(layer, tables.majorants, origin, dir, t0, t1,
+                     [&](float ta, float tb, float majorant) { return visit(ta, tb, majorant, density); });
+}
+
 /// Delta tracking of `ray` (world; direction of any length) through the scene's clouds up to its
 /// parameter `tmax`: true where it collides with a droplet first, at parameter `t`.
 URBIS_HD inline bool cloudCollision(const SceneView& scene, const Ray& ray, float tmax, SampleStream& rng, float& t) {
     if (!hasClouds(scene)) return false;
-    const CloudLayer& layer = scene.cloudLayers[0];
-    const CloudTables tables = cloudTables(scene);
     const float len = length(ray.dir);
-    const Vec3f dir = ray.dir / len;
-    float t0, t1;
-    if (!clipToCloudLayer(layer, ray.origin, dir, fminf(tmax * len, 3.0e38f), t0, t1)) return false;
-    const auto density = [&](float s) {
-        const Vec3f p = ray.origin + dir * s;
-        return cloudDensity(layer, tables, p, p.y);
-    };
     bool collided = false;
-    forEachCloudCell(layer, tables.majorants, ray.origin, dir, t0, t1, [&](float ta, float tb, float majorant) {
-        float s;
-        collided = deltaTrack(density, majorant, ta, tb, rng, s);
-        if (collided) t = s / len;
-        return !collided;
-    });
+    forEachCloudPiece(scene, ray.origin, ray.dir / len, fminf(tmax * len, 3.0e38f),
+                      [&](float ta, float tb, float majorant, const auto& density) {
+                          float s;
+                          collided = deltaTrack(density, majorant, ta, tb, rng, s);
+                          if (collided) t = s / len;
+                          return !collided;
+                      });
     return collided;
 }
 
@@ -157,19 +177,12 @@ URBIS_HD inline bool cloudCollision(const SceneView& scene, const Ray& ray, floa
 URBIS_HD inline float cloudTransmittance(const SceneView& scene, const Ray& ray, const CloudOctaves& octaves,
                                          SampleStream& rng) {
     float T[kCloudMaxOctaves] = {1.0f, 1.0f, 1.0f, 1.0f};
-    float t0, t1;
-    const float len = length(ray.dir);
-    const Vec3f dir = ray.dir / len;
-    if (hasClouds(scene) && clipToCloudLayer(scene.cloudLayers[0], ray.origin, dir, fminf(ray.tmax * len, 3.0e38f), t0, t1)) {
-        const CloudLayer& layer = scene.cloudLayers[0];
-        const CloudTables tables = cloudTables(scene);
-        const auto density = [&](float s) {
-            const Vec3f p = ray.origin + dir * s;
-            return cloudDensity(layer, tables, p, p.y);
-        };
-        forEachCloudCell(layer, tables.majorants, ray.origin, dir, t0, t1, [&](float ta, float tb, float majorant) {
-            return ratioTrack(density, majorant, ta, tb, octaves, T, rng);
-        });
+    if (hasClouds(scene)) {
+        const float len = length(ray.dir);
+        forEachCloudPiece(scene, ray.origin, ray.dir / len, fminf(ray.tmax * len, 3.0e38f),
+                          [&](float ta, float tb, float majorant, const auto& density) {
+                              return ratioTrack(density, majorant, ta, tb, octaves, T, rng);
+                          });
     }
     float sum = 0;
     for (uint32_t i = 0; i < octaves.count; ++i) sum += octaves.weight[i] * T[i];

@@ -9,16 +9,12 @@
 #pragma once
 
 #include "media/aerial_perspective.h"
+#include "media/cloud_shell.h"
 
 namespace urbis {
 
 /// Steps of one segment's march.
 inline constexpr uint32_t kPlanetAtmosphereSteps = 32;
-
-/// The scene's planet, or null in a city.
-URBIS_HD inline const PlanetRecord* scenePlanet(const SceneView& scene) {
-    return hasFeatures(scene.features, kKindFeature<PlanetRecord>) && scene.planets.size ? &scene.planets[0] : nullptr;
-}
 
 /// Height (km) of the world point `p` above the atmosphere's ground sphere (the planet's sea level).
 URBIS_HD inline float planetAtmosphereHeight(const PlanetRecord& pl, Vec3f p) {

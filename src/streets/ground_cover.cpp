@@ -135,7 +135,7 @@ void meshGroundCover(const CityModel& city, const StreetOptions& options, Street
     size_t groundTriangles = 0, waterTriangles = 0;
     uint64_t groundAreas = 0, waterAreas = 0;
     for (const CoverItem& item : items) {
-        if (!item.kept) continue;
+        if (!item.kept || (item.style.band == Band::Water && !options.water.enabled)) continue;
         const std::vector<PlaneTriangle> triangles = shapes.triangles(item.shape);
         if (triangles.empty()) {
             ++out.dropped["area_triangulation_failed"];

@@ -7,6 +7,7 @@
 namespace urbis {
 
 struct WaterOptions {
+    bool enabled = true;        ///< false: no water surfaces or beds (the ground shows; a benchmark's share of the water)
     float maxDepth = 4.0f;      ///< m below the ground of the bed away from the shore
     float shelfWidth = 15.0f;   ///< m from the shore to where the bed reaches maxDepth
     /// 1/m, linear RGB: a river's clear but not pure water (pure water: about 0.35, 0.06, 0.01).
