@@ -17,16 +17,29 @@
 using namespace urbis;
 using namespace urbis::test;
 
+namespace {
+
+/// The wall scene's film of `spp` samples with AOVs, rendered on the CPU, and the scene on the GPU holding it.
+struct FilmOnBoth {
+    Scene scene = wallScene(true);
+    Film film;
+    std::unique_ptr<GpuScene> gpu;
+    FilmOnBoth(uint32_t width, uint32_t height, uint32_t spp) : film(width, height, true) {
+        RenderCounters counters;
+        renderCpu(scene.view(), wallCamera(float(width) / float(height)), filmSettings(width, height, spp), {0, spp}, film,
+                  false, counters);
+        gpu = GpuScene::upload(scene);
+        gpu->setFilm(film);
+    }
+};
+
+} // namespace
+
 TEST(GpuPicture, EveryLayerAgreesWithTheCpuWithinALevel) {
     URBIS_SKIP_WITHOUT_GPU();
-    constexpr uint32_t kWidth = 96, kHeight = 64;
-    const Scene scene = wallScene(true);
-    Film film(kWidth, kHeight, true);
-    RenderCounters counters;
-    renderCpu(scene.view(), wallCamera(float(kWidth) / float(kHeight)), filmSettings(kWidth, kHeight, 4), {0, 4}, film,
-              false, counters);
-    std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
-    gpu->setFilm(film);
+    FilmOnBoth both(96, 64, 4);
+    const Film& film = both.film;
+    GpuScene* gpu = both.gpu.get();
     for (size_t d = 0; d < std::size(kFilmDisplayNames); ++d) {
         const FilmDisplay display = FilmDisplay(d);
         const Rgb8Image cpu = displayImage(film, display, 0.5f);
@@ -47,14 +60,9 @@ TEST(GpuPicture, EveryLayerAgreesWithTheCpuWithinALevel) {
 
 TEST(GpuPicture, ADenoisedPictureKeepsTheFilmsSums) {
     URBIS_SKIP_WITHOUT_GPU();
-    constexpr uint32_t kWidth = 64, kHeight = 48;
-    const Scene scene = wallScene(true);
-    Film film(kWidth, kHeight, true);
-    RenderCounters counters;
-    renderCpu(scene.view(), wallCamera(float(kWidth) / float(kHeight)), filmSettings(kWidth, kHeight, 2), {0, 2}, film,
-              false, counters);
-    std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
-    gpu->setFilm(film);
+    FilmOnBoth both(64, 48, 2);
+    const Film& film = both.film;
+    GpuScene* gpu = both.gpu.get();
     gpu->drawPicture(FilmDisplay::Image, 0.0f, false);
     const Rgb8Image noisy = gpu->readPicture();
     gpu->drawPicture(FilmDisplay::Image, 0.0f, true);

@@ -95,7 +95,11 @@ void runView(const ViewCommandLine& line) {
     checkOutputPath("--save-scene", line.scene.saveScenePath(), {".json"});
     if (v.headless && !v.windowShot.empty()) throw InputError("--window-shot: --headless has no window", FailureKind::Usage);
     std::vector<ScriptStep> script = v.script.empty() ? std::vector<ScriptStep>{} : checkedScript(v.script, scene);
-    if (!v.goTo.empty()) script.insert(script.begin(), ScriptStep{.goTo = v.goTo});   // before the script's frame 0
+    if (!v.goTo.empty()) {   // a step before the script's own of frame 0
+        ScriptStep goTo;
+        goTo.goTo = v.goTo;
+        script.insert(script.begin(), goTo);
+    }
     if (!v.headless)
         if (const std::string why = viewerWindowUnavailable(); !why.empty()) throw InputError(why, FailureKind::Usage);
 
