@@ -6,6 +6,7 @@
 #include "cli_support.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <png.h>
 
 #include <cstdlib>
@@ -121,6 +122,25 @@ TEST(ViewCli, AProblemOnTheWayIsSaidAndTheViewerGoesOn) {
     EXPECT_EQ(window.exitCode, 0) << window.err;
     EXPECT_NE(window.err.find("urbis: broken.json: film.exposure: expected a number\n"), std::string::npos) << window.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "after.png"));
+}
+
+TEST(ViewCli, GotoLooksDownOnANamedFeatureOfTheOsmFile) {
+    const std::string village = URBIS_OSMNX_DATA "/planet_10.068,48.135_10.071,48.137.osm";
+    if (!std::filesystem::exists(village)) GTEST_SKIP() << village << " is absent (Debian: python-osmnx-doc)";
+    const auto dir = scratchDir("view_goto");
+    const std::string args = "view --headless --width 32 --height 18 --spp 1 --frames 1 --osm '" + village + "' ";
+    CommandResult go = runUrbis(args + "--goto goethe --save-scene goethe.json", dir);
+    ASSERT_EQ(go.exitCode, 0) << go.err;
+    EXPECT_NE(go.err.find("urbis: went to Goethestraße"), std::string::npos) << go.err;
+    // 250 m from the street, 30 degrees down: 125 m above the point looked at.
+    const nlohmann::json camera = nlohmann::json::parse(readFile(dir / "goethe.json"))["camera"];
+    EXPECT_NEAR(camera["position"][1].get<double>() - camera["target"][1].get<double>(), 125.0, 0.5) << camera;
+    CommandResult none = runUrbis(args + "--goto 'Coit Tower'", dir);
+    EXPECT_EQ(none.exitCode, 1);
+    EXPECT_NE(none.err.find("is named like 'Coit Tower'"), std::string::npos) << none.err;
+    CommandResult generated = runUrbis("view --headless --width 32 --height 18 --buildings 4 --frames 1 --goto x", dir);
+    EXPECT_EQ(generated.exitCode, 1);
+    EXPECT_NE(generated.err.find("the generated city has no named features"), std::string::npos) << generated.err;
 }
 
 TEST(ViewCli, WithoutADisplayItSaysSoAndHeadlessNeedsNone) {

@@ -45,6 +45,15 @@ TEST(ViewCamera, LookingAtRoundTripsThroughHeadingAndPitch) {
     EXPECT_NEAR(viewCameraLookingAt({0, 0, 0}, {0, 1, -1}).pitch, 45.0f, 1e-4f);
 }
 
+TEST(ViewCamera, OverlookingLooksDownOnTheTargetFromItsDistance) {
+    const Vec3f target{100, 12, -50};
+    const ViewCamera c = viewCameraOverlooking(target, 90.0f, -30.0f, 250.0f);   // looking east, down
+    expectNear(viewTarget(c), target, 1e-3f);
+    EXPECT_NEAR(c.position.y - target.y, 125.0f, 1e-3f);                  // 250 m * sin 30
+    EXPECT_NEAR(c.position.x - target.x, -250.0f * std::sqrt(3.0f) / 2, 1e-3f);   // west of it
+    EXPECT_NEAR(c.position.z, target.z, 1e-3f);
+}
+
 TEST(ViewCamera, ForwardKeyMovesAtSpeedTimesHeightAboveGround) {
     CameraController c = controllerAt({0, 40, 0}, 90);   // looking east, 40 m up
     c.mode = CameraMode::Fly;
@@ -101,6 +110,17 @@ TEST(ViewCamera, MovesStopShortOfWallsUnlessCollisionsAreOff) {
     through.collide = false;
     through.update(in);
     EXPECT_NEAR(through.camera().position.x, 60.0f, 1e-3f);
+}
+
+TEST(ViewCamera, AMoveAlongAWallKeepsItsClearance) {
+    CameraController c = controllerAt({49.5f, 10, 0}, 0, true);   // half a metre from the wall x = 50, facing north
+    c.mode = CameraMode::Fly;
+    CameraInput in;
+    in.forward = true;
+    in.seconds = 1.0f;   // 10 m north, along the wall: the move's own ray never meets it
+    c.update(in);
+    EXPECT_NEAR(c.camera().position.x, 50 - CameraController::kClearance, 1e-3f);
+    EXPECT_NEAR(c.camera().position.z, -10.0f, 1e-3f);
 }
 
 TEST(ViewCamera, StaysAboveTheGround) {

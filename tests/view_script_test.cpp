@@ -27,7 +27,7 @@ TEST(ViewScript, ReadsEveryPartOfAStepSortedByFrame) {
         {"frame": 9, "screenshot": "a.png", "width": 64, "height": 32, "spp": 4, "quit": true},
         {"frame": 2, "set": {"film": {"exposure": 1}}, "mode": "fly",
          "input": {"keys": "WQ", "mouse": [10, -5], "scroll": 1, "seconds": 0.25}, "undo": true},
-        {"frame": 2, "jump": [-122.4, 37.79, 300], "save_scene": "s2.json", "load": "x.json"}]})"), "s.json");
+        {"frame": 2, "jump": [-122.4, 37.79, 300], "goto": "Ferry Building", "save_scene": "s2.json", "load": "x.json"}]})"), "s.json");
     ASSERT_EQ(steps.size(), 3u);
     EXPECT_EQ(steps[0].frame, 2u);
     EXPECT_EQ(steps[0].set["film"]["exposure"], 1);
@@ -42,6 +42,7 @@ TEST(ViewScript, ReadsEveryPartOfAStepSortedByFrame) {
     EXPECT_EQ(steps[1].load, "x.json");
     ASSERT_TRUE(steps[1].jump);
     EXPECT_DOUBLE_EQ((*steps[1].jump)[1], 37.79);
+    EXPECT_EQ(steps[1].goTo, "Ferry Building");
     EXPECT_EQ(steps[2].screenshot, "a.png");
     EXPECT_EQ(steps[2].width, 64u);
     EXPECT_TRUE(steps[2].quit);
@@ -57,6 +58,7 @@ TEST(ViewScript, NamesTheFileTheStepAndTheKeyOfEachProblem) {
     EXPECT_EQ(scriptProblem(R"({"steps": [{"width": 10}]})"), "s.json: steps[0].width: width, height and spp belong to a screenshot");
     EXPECT_EQ(scriptProblem(R"({"steps": [{"jump": [200, 0, 10]}]})"),
               "s.json: steps[0].jump: need |LON| <= 180, |LAT| <= 90 degrees and 0 <= ALTITUDE <= 1e6 metres");
+    EXPECT_EQ(scriptProblem(R"({"steps": [{"goto": 3}]})"), "s.json: steps[0].goto: expected the name of an OSM feature");
     EXPECT_EQ(scriptProblem(R"({"steps": [{"set": 3}]})"), "s.json: steps[0].set: expected an object shaped like a scene file");
 }
 

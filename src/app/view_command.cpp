@@ -27,6 +27,7 @@ void addViewCommand(CLI::App& app, ViewCommandLine& line) {
         ->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
     addRunOptions(*cmd, o);
     cmd->add_option("--script", v.script, "Viewer script (.json, docs/viewer.md): timed camera moves, parameter changes, screenshots");
+    cmd->add_option("--goto", v.goTo, "Start looking down on the OSM feature of this name (its name tag; the best match)");
     cmd->add_option("--frames", v.frames, "End after this many frames (default: when the window closes; headless: when the image has its --spp)")
         ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
     cmd->add_option("--screenshot", v.screenshot, "At the end, write the image as accumulated (.png or .exr)");
@@ -47,12 +48,13 @@ std::vector<ScriptStep> checkedScript(const std::string& path, SceneDescription 
     return steps;
 }
 
-/// The headless loop: script steps, then a sample and its picture, each frame.
+/// The headless loop: script steps, then a sample and its picture, each frame. The picture is made
+/// (on the GPU where the film is) but not copied to the host: nothing shows it.
 void runHeadless(ViewSession& session, const std::vector<ScriptStep>& script, uint64_t frames) {
     size_t next = 0;
     for (uint64_t frame = 0; !frames || frame < frames; ++frame) {
         if (runScriptSteps(session, script, next, frame)) return;
-        if (session.renderFrame()) session.picture();
+        if (session.renderFrame()) session.makePicture();
         else if (!frames && next == script.size()) return;   // complete, and nothing left to do
     }
 }
@@ -92,7 +94,12 @@ void runView(const ViewCommandLine& line) {
     checkOutputPath("--stats", v.statsFile, {".json"});
     checkOutputPath("--save-scene", line.scene.saveScenePath(), {".json"});
     if (v.headless && !v.windowShot.empty()) throw InputError("--window-shot: --headless has no window", FailureKind::Usage);
-    const std::vector<ScriptStep> script = v.script.empty() ? std::vector<ScriptStep>{} : checkedScript(v.script, scene);
+    std::vector<ScriptStep> script = v.script.empty() ? std::vector<ScriptStep>{} : checkedScript(v.script, scene);
+    if (!v.goTo.empty()) {   // a step before the script's own of frame 0
+        ScriptStep goTo;
+        goTo.goTo = v.goTo;
+        script.insert(script.begin(), goTo);
+    }
     if (!v.headless)
         if (const std::string why = viewerWindowUnavailable(); !why.empty()) throw InputError(why, FailureKind::Usage);
 

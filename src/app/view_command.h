@@ -12,6 +12,7 @@ namespace urbis {
 /// What `urbis view` does besides the scene: scripts, frames, outputs, the window or none.
 struct ViewOptions {
     std::string script;       ///< --script: a viewer script (viewer/view_script.h)
+    std::string goTo;         ///< --goto: the name of an OSM feature to look down on first
     uint64_t frames = 0;      ///< --frames: end after this many frames; 0: never (headless: when the image is complete)
     std::string screenshot;   ///< --screenshot: the film as accumulated at the end, PNG or EXR
     std::string windowShot;   ///< --window-shot: the whole window at the end, PNG

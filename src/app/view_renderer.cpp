@@ -6,6 +6,7 @@
 #include "cpu/cpu_renderer.h"
 
 #include <cstdio>
+#include <stdexcept>
 
 namespace urbis {
 
@@ -61,21 +62,23 @@ const Film& ProgressiveRenderer::film() {
     return film_;
 }
 
-Rgb8Image ProgressiveRenderer::picture(FilmDisplay display, float exposureEv, bool denoise) {
-    const Film& accumulated = film();
-    if (!denoise || samples_ == 0 || samples_ >= kDenoiseUntil || !accumulated.hasAovs())
-        return displayImage(accumulated, display, exposureEv);
-    if (!gpu_) {
-        Film copy = accumulated;  // the filter leaves no unbiased sums: the film goes on from the copy
-        denoiseCpu(copy);
-        return displayImage(copy, display, exposureEv);
+void ProgressiveRenderer::makePicture(FilmDisplay display, float exposureEv, bool denoise, uint8_t* deviceRgba) {
+    const bool denoised = denoise && samples_ > 0 && samples_ < kDenoiseUntil && film_.hasAovs();
+    if (gpu_) {
+        gpu_->drawPicture(display, exposureEv, denoised, deviceRgba);
+        return;
     }
-    Film denoised;
-    gpu_->denoise();
-    gpu_->readFilm(denoised);
-    gpu_->setFilm(accumulated);   // the device film back to its sums, to go on adding samples
-    return displayImage(denoised, display, exposureEv);
+    if (deviceRgba) throw std::invalid_argument("ProgressiveRenderer::makePicture: no device picture on the CPU");
+    if (!denoised) {
+        hostPicture_ = displayImage(film_, display, exposureEv);
+        return;
+    }
+    Film copy = film_;  // the filter leaves no unbiased sums: the film goes on from the copy
+    denoiseCpu(copy);
+    hostPicture_ = displayImage(copy, display, exposureEv);
 }
+
+Rgb8Image ProgressiveRenderer::picture() const { return gpu_ ? gpu_->readPicture() : hostPicture_; }
 
 size_t ProgressiveRenderer::deviceBytes() const { return gpu_ ? gpu_->memory().total() : 0; }
 

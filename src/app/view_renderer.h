@@ -1,6 +1,6 @@
 // The viewer's render loop: one sample per pixel a frame added to a film on the GPU (when usable)
-// or the CPU, started over on any change, and the film shown as a picture (film/aov_display.h),
-// denoised while it is young.
+// or the CPU, started over on any change, and the film made into a picture where it is (the GPU's
+// picture kernel, or film/aov_display.h on the CPU), denoised while it is young.
 #pragma once
 
 #include "film/aov_display.h"
@@ -33,11 +33,16 @@ public:
     void addSample(RenderCounters& counters);
     /// Samples per pixel so far.
     uint32_t samples() const { return samples_; }
+    /// Whether the film keeps AOVs.
+    bool hasAovs() const { return film_.hasAovs(); }
     /// The film as accumulated (copied from the GPU first where it renders there).
     const Film& film();
-    /// The picture of the film: `display` at `exposureEv`, denoised first with `denoise` while
-    /// samples() < kDenoiseUntil.
-    Rgb8Image picture(FilmDisplay display, float exposureEv, bool denoise);
+    /// Makes the picture of the film: `display` at `exposureEv`, denoised first with `denoise` while
+    /// samples() < kDenoiseUntil. On the GPU it stays there: in `deviceRgba` (width x height x 4
+    /// bytes of device memory: a mapped OpenGL pixel buffer) or, where null, for picture() to copy.
+    void makePicture(FilmDisplay display, float exposureEv, bool denoise, uint8_t* deviceRgba = nullptr);
+    /// The picture makePicture made last (with no deviceRgba), on the host.
+    Rgb8Image picture() const;
 
     const std::string& device() const { return device_; }   ///< "cpu" or "cuda"
     const std::string& deviceName() const { return deviceName_; }
@@ -50,7 +55,8 @@ private:
     std::string device_ = "cpu", deviceName_;
     Camera camera_;
     RenderSettings settings_;
-    Film film_;
+    Film film_;                 ///< on the GPU: its size and layers, its sums only when film() copied them
+    Rgb8Image hostPicture_;     ///< the CPU's last picture
     uint32_t samples_ = 0;
     bool filmCurrent_ = true;   ///< film_ holds the device film's samples
 };

@@ -10,6 +10,8 @@
 #include "description/scene_parts.h"
 #include "film/film_output.h"
 #include "geometry/scene_intersect.h"
+#include "osm/geo_projection.h"
+#include "viewer/place_search.h"
 #include "viewer/scene_edit.h"
 
 #include <chrono>
@@ -97,7 +99,7 @@ bool ViewSession::edit(const SceneDescription& next) {
         const SceneDescription before = scene_;
         scene_ = next;
         if (change == SceneChange::Display) {
-            if (scene_.film.denoise && !renderer_->film().hasAovs()) restart();
+            if (scene_.film.denoise && !renderer_->hasAovs()) restart();
             return true;
         }
         try {
@@ -204,6 +206,56 @@ bool ViewSession::jump(double lon, double lat, float altitude) {
     return true;
 }
 
+const std::vector<NamedPlace>& ViewSession::places() {
+    const std::string& source = scene_.source.osm;
+    if (places_ && placesSource_ == source) return *places_;
+    places_.emplace();
+    placesSource_ = source;
+    if (source.empty() || !prepared_->origin.valid) return *places_;
+    std::vector<NamedPlace> all;
+    try {
+        all = readPlaceNames(source);
+    } catch (const InputError& e) {
+        report(e.what());
+        return *places_;
+    }
+    // The city's bounds, 100 m wider: a file's features beyond its crop box show nothing to look at.
+    Bounds3f city;
+    for (const Bounds3f& piece : prepared_->framingPieces) city.extend(piece);
+    const GeoProjection projection(LonLat{prepared_->origin.lon, prepared_->origin.lat});
+    for (NamedPlace& place : all) {
+        const Vec2d local = projection.project(LonLat{place.lon, place.lat});
+        const float x = float(local.x), z = float(-local.y);
+        if (x >= city.lo.x - 100.0f && x <= city.hi.x + 100.0f && z >= city.lo.z - 100.0f && z <= city.hi.z + 100.0f)
+            places_->push_back(std::move(place));
+    }
+    return *places_;
+}
+
+bool ViewSession::goTo(const std::string& name) {
+    if (!prepared_->origin.valid) {
+        report("goto: the generated city has no named features (jumps by name need an OSM city)");
+        return false;
+    }
+    const std::vector<NamedPlace>& all = places();
+    const std::vector<size_t> found = findPlaces(all, name, 1);
+    if (found.empty()) {
+        report("goto: no feature of " + scene_.source.osm + " is named like '" + name + "'");
+        return false;
+    }
+    const NamedPlace& place = all[found[0]];
+    const Vec2d local = GeoProjection(LonLat{prepared_->origin.lon, prepared_->origin.lat}).project(LonLat{place.lon, place.lat});
+    // The point looked at: the ground, or the roof, under the feature's position.
+    constexpr float kAbove = 1e4f;
+    const Vec3f high{float(local.x), kAbove, float(-local.y)};
+    const float drop = probe(high, Vec3f{0, -1, 0}, 2.0f * kAbove);
+    const Vec3f target{high.x, drop <= 2.0f * kAbove ? kAbove - drop : 0.0f, high.z};
+    controller_->jumpTo(viewCameraOverlooking(target, controller_->camera().heading, kGotoPitch, kGotoDistance));
+    std::fprintf(stderr, "urbis: went to %s (%.6f, %.6f)\n", place.name.c_str(), place.lon, place.lat);
+    cameraToScene();
+    return true;
+}
+
 std::array<double, 2> ViewSession::skyLocation() const { return skyLocationOf(scene_.astronomy, prepared_->origin); }
 
 void ViewSession::undo() {
@@ -217,6 +269,7 @@ bool ViewSession::runStep(const ScriptStep& step) {
     if (step.input) cameraInput(*step.input);
     if (step.undo) undo();
     if (step.jump) jump((*step.jump)[0], (*step.jump)[1], float((*step.jump)[2]));
+    if (!step.goTo.empty()) goTo(step.goTo);
     if (!step.screenshot.empty()) screenshot(step.screenshot, step.width, step.height, step.spp);
     if (!step.saveScene.empty()) save(step.saveScene);
     return step.quit;
@@ -224,7 +277,7 @@ bool ViewSession::runStep(const ScriptStep& step) {
 
 void ViewSession::setDisplay(FilmDisplay display) {
     display_ = display;
-    if (display != FilmDisplay::Image && !renderer_->film().hasAovs()) restart();
+    if (display != FilmDisplay::Image && !renderer_->hasAovs()) restart();
 }
 
 bool ViewSession::renderFrame() {
@@ -240,9 +293,21 @@ bool ViewSession::renderFrame() {
     return true;
 }
 
+void ViewSession::makePicture(uint8_t* deviceRgba) {
+    const double start = now();
+    renderer_->makePicture(display_, scene_.film.exposure, scene_.film.denoise, deviceRgba);
+    pictureMade(start);
+}
+
 Rgb8Image ViewSession::picture() {
     const double start = now();
-    Rgb8Image image = renderer_->picture(display_, scene_.film.exposure, scene_.film.denoise);
+    renderer_->makePicture(display_, scene_.film.exposure, scene_.film.denoise);
+    Rgb8Image image = renderer_->picture();
+    pictureMade(start);
+    return image;
+}
+
+void ViewSession::pictureMade(double start) {
     const double end = now();
     stats_.secondsPicture += end - start;
     stats_.lastFrameSeconds += end - start;
@@ -250,7 +315,6 @@ Rgb8Image ViewSession::picture() {
         stats_.latencies.push_back(end - changedAt_);
         changed_ = false;
     }
-    return image;
 }
 
 } // namespace urbis

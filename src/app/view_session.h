@@ -7,12 +7,14 @@
 #include "app/view_renderer.h"
 #include "description/scene_description.h"
 #include "film/aov_display.h"
+#include "osm/place_names.h"
 #include "viewer/view_camera.h"
 #include "viewer/view_script.h"
 
 #include <nlohmann/json.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,7 +25,7 @@ struct ViewStats {
     uint64_t frames = 0;            ///< frames that added a sample
     uint64_t rays = 0;
     double secondsRender = 0;       ///< adding the samples (the GPU's kernels or the CPU's render)
-    double secondsPicture = 0;      ///< turning the film into the picture (copy from the GPU, denoise, tone map)
+    double secondsPicture = 0;      ///< turning the film into the picture (denoise, tone map, a copy to the host where asked)
     std::vector<double> latencies;  ///< seconds from each change to the first picture with a sample after it
     double lastFrameSeconds = 0;    ///< render and picture of the last frame
 };
@@ -55,6 +57,15 @@ public:
     /// Moves the camera to LON, LAT (degrees), `altitude` metres above the ground, keeping its heading
     /// and pitch (OSM cities only). Reports and returns false where it cannot.
     bool jump(double lon, double lat, float altitude);
+    /// Moves the camera to look down on the named OSM feature that best matches `name` (findPlaces),
+    /// from kGotoDistance metres at kGotoPitch, keeping its heading. Reports and returns false where
+    /// none matches or the city is not from OSM.
+    bool goTo(const std::string& name);
+    /// The named features of the city inside its bounds (read from its OSM file on first use; none
+    /// for the generated city). Reports a file it cannot read, and then has none.
+    const std::vector<NamedPlace>& places();
+    static constexpr float kGotoDistance = 250.0f;   ///< metres from the feature
+    static constexpr float kGotoPitch = -30.0f;      ///< degrees: looking down on it
     /// Undoes the camera's last move.
     void undo();
     CameraController& controller() { return *controller_; }
@@ -64,7 +75,11 @@ public:
     bool runStep(const ScriptStep& step);
     /// Adds a sample of every pixel unless the image holds the scene's spp already; false then.
     bool renderFrame();
-    /// The film as a picture, as display, exposure and the denoiser ask.
+    /// Makes the film's picture, as display, exposure and the denoiser ask, and leaves it where it is
+    /// made: on the GPU in `deviceRgba` (a mapped OpenGL pixel buffer, ProgressiveRenderer::makePicture)
+    /// or its own buffer; on the CPU in the host's. The headless loop and the window's CUDA-OpenGL path.
+    void makePicture(uint8_t* deviceRgba = nullptr);
+    /// makePicture, the picture then copied to the host.
     Rgb8Image picture();
     /// Whether the image holds the scene's samples per pixel.
     bool complete() const { return renderer_->samples() >= scene_.integrator.spp; }
@@ -94,6 +109,8 @@ private:
     /// The description's camera becomes the controller's.
     void sceneToCamera();
     void restart();
+    /// Counts a picture begun at `start` (session clock) in the stats, and the latency of a change it is the first after.
+    void pictureMade(double start);
     /// Distance along a unit ray to the first surface of the scene (the controller's CameraProbe).
     float probe(Vec3f origin, Vec3f dir, float maxDistance) const;
 
@@ -109,6 +126,8 @@ private:
     double changedAt_ = 0;          ///< seconds on the session's clock
     std::string message_;
     size_t problems_ = 0;
+    std::optional<std::vector<NamedPlace>> places_;   ///< read on first use
+    std::string placesSource_;                         ///< the OSM file places_ were read from
 };
 
 } // namespace urbis

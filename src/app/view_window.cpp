@@ -1,13 +1,17 @@
 // The viewer's window: GLFW for the window and the input, Dear ImGui (its GLFW and OpenGL 3 backends)
-// for the panel and the overlay, and the picture as an OpenGL texture drawn behind them.
+// for the panel and the overlay, and the picture as an OpenGL texture drawn behind them: from a pixel
+// buffer that CUDA writes where the film is on the GPU, else from the host.
 #include "app/view_window.h"
 
 #include "app/host_memory.h"
 #include "app/view_panel.h"
 #include "base/input_error.h"
 #include "film/image.h"
+#include "gpu/gpu_gl_buffer.h"
+#include "viewer/place_search.h"
 #include "viewer/scene_edit.h"
 
+#define GL_GLEXT_PROTOTYPES 1   // pixel buffers (OpenGL 2.1), exported by libGL itself
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -18,6 +22,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <iterator>
+#include <memory>
 
 namespace urbis {
 
@@ -38,26 +43,88 @@ class PictureTexture {
 public:
     PictureTexture() { glGenTextures(1, &id_); }
     ~PictureTexture() { glDeleteTextures(1, &id_); }
+    /// The picture from host memory.
     void upload(const Rgb8Image& image) {
-        glBindTexture(GL_TEXTURE_2D, id_);
+        bind(image.width, image.height);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        if (image.width != width_ || image.height != height_) {
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, GLsizei(image.width), GLsizei(image.height), 0, GL_RGB,
-                         GL_UNSIGNED_BYTE, image.rgb.data());
-            width_ = image.width;
-            height_ = image.height;
-        } else {
-            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, GLsizei(width_), GLsizei(height_), GL_RGB, GL_UNSIGNED_BYTE, image.rgb.data());
-        }
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, GLsizei(width_), GLsizei(height_), GL_RGB, GL_UNSIGNED_BYTE, image.rgb.data());
+    }
+    /// The picture from the pixel buffer bound to GL_PIXEL_UNPACK_BUFFER (RGBA, width x height): a
+    /// copy on the GPU.
+    void uploadBound(uint32_t width, uint32_t height) {
+        bind(width, height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, GLsizei(width_), GLsizei(height_), GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     }
     ImTextureID id() const { return reinterpret_cast<ImTextureID>(uintptr_t(id_)); }
 
 private:
+    void bind(uint32_t width, uint32_t height) {
+        glBindTexture(GL_TEXTURE_2D, id_);
+        if (width == width_ && height == height_) return;
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        GLint unpack = 0;   // storage only: no pixels from a bound pixel buffer
+        glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, GLsizei(width), GLsizei(height), 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(unpack));
+        width_ = width;
+        height_ = height;
+    }
+
     GLuint id_ = 0;
     uint32_t width_ = 0, height_ = 0;
 };
+
+/// The CUDA film's picture written by the GPU into an OpenGL pixel buffer (CUDA-OpenGL interop) and
+/// from there into the texture: no copy through the host.
+class InteropPicture {
+public:
+    InteropPicture() { glGenBuffers(1, &buffer_); }
+    ~InteropPicture() {
+        cuda_.reset();   // unregistered before OpenGL deletes it
+        glDeleteBuffers(1, &buffer_);
+    }
+    /// The session's picture into `texture`. Throws InputError where CUDA cannot register the buffer.
+    void update(ViewSession& session, PictureTexture& texture) {
+        const uint32_t width = session.scene().film.width, height = session.scene().film.height;
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, buffer_);
+        if (width != width_ || height != height_) {
+            cuda_.reset();   // a registered buffer keeps its storage: unregistered to be resized
+            width_ = height_ = 0;
+            glBufferData(GL_PIXEL_UNPACK_BUFFER, GLsizeiptr(size_t(width) * height * 4), nullptr, GL_STREAM_DRAW);
+            cuda_ = std::make_unique<CudaGlBuffer>(buffer_);
+            width_ = width;
+            height_ = height;
+        }
+        session.makePicture(cuda_->map());
+        cuda_->unmap();
+        texture.uploadBound(width, height);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    }
+
+private:
+    GLuint buffer_ = 0;
+    std::unique_ptr<CudaGlBuffer> cuda_;
+    uint32_t width_ = 0, height_ = 0;
+};
+
+/// The session's picture into the texture: through the interop buffer where there is one (dropped,
+/// saying why, on its first failure), else copied through the host.
+void showPicture(ViewSession& session, PictureTexture& texture, std::unique_ptr<InteropPicture>& interop) {
+    if (interop) {
+        try {
+            interop->update(session, texture);
+            return;
+        } catch (const InputError& e) {
+            std::fprintf(stderr, "urbis: %s; the window copies the picture through the host\n", e.what());
+            glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+            interop.reset();
+        }
+    }
+    texture.upload(session.picture());
+}
 
 /// The window's framebuffer as an image (rows from the top).
 Rgb8Image readWindow(GLFWwindow* window) {
@@ -79,6 +146,7 @@ struct PanelState {
     std::string scenePath = "urbis_view.json", shotPath = "urbis_view.png";
     int shotSize[3] = {0, 0, 0};   ///< width, height, spp; 0: the film's
     double jumpTo[3] = {0, 0, 200};
+    std::string placeQuery;        ///< the search box of named features
 };
 
 /// The camera's keys and mouse of this frame, unless the panel has them.
@@ -131,8 +199,14 @@ void drawViewControls(ViewSession& session, PanelState& panel) {
     if (ImGui::Button("undo move (U)")) session.undo();
     ImGui::InputScalarN("lon, lat, alt", ImGuiDataType_Double, panel.jumpTo, 3);
     if (ImGui::Button("jump")) session.jump(panel.jumpTo[0], panel.jumpTo[1], float(panel.jumpTo[2]));
-    ImGui::SameLine();
-    ImGui::TextDisabled("(by name: the OSM import keeps no names)");
+    ImGui::InputText("find a place", &panel.placeQuery);
+    if (!panel.placeQuery.empty()) {
+        const std::vector<NamedPlace>& places = session.places();
+        const std::vector<size_t> found = findPlaces(places, panel.placeQuery, 8);
+        if (found.empty()) ImGui::TextDisabled("(no feature of the OSM file is named so)");
+        for (size_t i : found)
+            if (ImGui::Selectable(places[i].name.c_str())) session.goTo(places[i].name);
+    }
     int display = int(session.display());
     if (ImGui::Combo("show", &display, kFilmDisplayNames, int(std::size(kFilmDisplayNames)))) session.setDisplay(FilmDisplay(display));
 
@@ -215,6 +289,8 @@ void runViewerWindow(ViewSession& session, const ViewWindowOptions& options) {
     ImGui_ImplOpenGL3_Init("#version 130");
     {
         PictureTexture texture;
+        std::unique_ptr<InteropPicture> interop;
+        if (session.renderer().device() == "cuda") interop = std::make_unique<InteropPicture>();
         PanelState panel;
         panel.jumpTo[0] = session.skyLocation()[0];   // a jump starts from the city's own place
         panel.jumpTo[1] = session.skyLocation()[1];
@@ -236,7 +312,7 @@ void runViewerWindow(ViewSession& session, const ViewWindowOptions& options) {
             drawPanel(session, panel);
             drawOverlay(session);
             const bool rendered = session.renderFrame();
-            if (rendered || frame == 0) texture.upload(session.picture());
+            if (rendered || frame == 0) showPicture(session, texture, interop);
             ImGui::GetBackgroundDrawList()->AddImage(texture.id(), ImVec2(0, 0), ImGui::GetIO().DisplaySize);
             ImGui::Render();
 

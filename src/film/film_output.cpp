@@ -1,5 +1,6 @@
 #include "film/film_output.h"
 
+#include "film/aov_display.h"
 #include "film/denoise_filter.h"
 #include "film/exr_file.h"
 #include "film/tone_map.h"
@@ -28,18 +29,7 @@ bool filmOutputNeedsAovs(const std::string& path, uint32_t exrLayers) {
     return filmFormatOf(path) == FilmFormat::Exr && exrLayers != 0;
 }
 
-Rgb8Image toneMap(const Film& film, float exposureEv) {
-    Rgb8Image out{film.width, film.height, std::vector<uint8_t>(film.pixels() * 3)};
-    const float scale = std::exp2(exposureEv);
-    // Rows in parallel: the viewer tone maps every frame (each pixel alone, so any thread count agrees).
-    tbb::parallel_for(uint32_t(0), film.height, [&](uint32_t y) {
-        for (size_t i = size_t(y) * film.width; i < size_t(y + 1) * film.width; ++i) {
-            const Vec3f mean = meanRadiance(film, i);
-            for (int c = 0; c < 3; ++c) out.rgb[3 * i + c] = toneMapChannel(mean[c], scale);
-        }
-    });
-    return out;
-}
+Rgb8Image toneMap(const Film& film, float exposureEv) { return displayImage(film, FilmDisplay::Image, exposureEv); }
 
 void writeFilm(const Film& film, const std::string& path, const FilmOutputOptions& options) {
     switch (filmFormatOf(path)) {

@@ -13,6 +13,7 @@
 #include "integrators/path_samples.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <utility>
@@ -100,6 +101,18 @@ __global__ void __launch_bounds__(kTileX * kTileY) denoiseFinishKernel(FilmView 
     if (x < film.width && y < film.height) finishDenoise(film, x, y, guide[film.pixel(x, y)], signal[film.pixel(x, y)]);
 }
 
+/// One thread per pixel: its picture's `channels` bytes (RGB, or RGBA with alpha 255).
+__global__ void __launch_bounds__(kTileX * kTileY) pictureKernel(FilmView film, FilmDisplay display, float exposureScale,
+                                                                 uint8_t* picture, uint32_t channels) {
+    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+    if (x >= film.width || y >= film.height) return;
+    const size_t i = film.pixel(x, y);
+    uint8_t* out = picture + i * channels;
+    displayPixel(film, display, exposureScale, i, out);
+    if (channels == 4) out[3] = 255;
+}
+
 template <bool CostlyLeaves>
 __global__ void __launch_bounds__(kTraceBlock) closestKernel(SceneView scene, const Ray* rays, SurfaceHit* hits,
                                                             uint32_t count) {
@@ -180,6 +193,8 @@ struct GpuScene::Impl {
     DeviceBuffer<SurfaceHit> hits;
     DeviceBuffer<uint8_t> blocked;
     DeviceBuffer<unsigned long long> rayCount{1};
+    DeviceBuffer<uint8_t> picture;        ///< drawPicture's own RGB picture
+    DeviceBuffer<Vec3f> radianceKept;     ///< the film's radiance sums while a denoised picture is made
     std::unique_ptr<GpuPhotonPasses> photonPasses;   ///< the photon integrators' passes and buffers, made on first use
 
     /// The device film's arrays as per-ray code sees them.
@@ -309,6 +324,36 @@ void GpuScene::readFilm(Film& host) const {
     forEachFilmArray([](auto, bool, const auto& device, auto& array) { array = device.download(); }, m.film, host.arrays);
 }
 
+void GpuScene::drawPicture(FilmDisplay display, float exposureEv, bool denoised, uint8_t* rgba) {
+    Impl& m = *impl_;
+    const FilmView film = m.filmView();
+    const size_t pixels = size_t(film.width) * film.height;
+    if (display != FilmDisplay::Image && !film.hasAovs())
+        throw std::invalid_argument("GpuScene::drawPicture: the film keeps no AOVs to show");
+    if (denoised) {   // the filter overwrites the radiance sums only: they are kept aside, then put back
+        m.radianceKept.resize(pixels);
+        URBIS_CUDA_CHECK(cudaMemcpy(m.radianceKept.data(), film.radianceSum, pixels * sizeof(Vec3f), cudaMemcpyDeviceToDevice));
+        denoise();
+    }
+    const uint32_t channels = rgba ? 4 : 3;
+    if (!rgba) {
+        m.picture.resize(pixels * channels);
+        rgba = m.picture.data();
+    }
+    const dim3 block(kTileX, kTileY);
+    const dim3 grid((film.width + kTileX - 1) / kTileX, (film.height + kTileY - 1) / kTileY);
+    pictureKernel<<<grid, block>>>(film, display, std::exp2(exposureEv), rgba, channels);
+    checkLaunch("pictureKernel");
+    if (denoised)
+        URBIS_CUDA_CHECK(cudaMemcpy(film.radianceSum, m.radianceKept.data(), pixels * sizeof(Vec3f), cudaMemcpyDeviceToDevice));
+    URBIS_CUDA_CHECK(cudaDeviceSynchronize());
+}
+
+Rgb8Image GpuScene::readPicture() const {
+    const Impl& m = *impl_;
+    return {m.filmWidth, m.filmHeight, m.picture.download()};
+}
+
 LinearImage GpuScene::render(const Camera& camera, const RenderSettings& settings, RenderCounters& counters) {
     Film film(settings.width, settings.height, false);
     setFilm(film);
@@ -388,7 +433,7 @@ GpuMemory GpuScene::memory() const {
     const Impl& m = *impl_;
     GpuMemory out;
     out.scene = m.scene.memory();
-    out.film = m.filmBytes();
+    out.film = m.filmBytes() + m.picture.bytes() + m.radianceKept.bytes();
     out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes() + (m.photonPasses ? m.photonPasses->bytes() : 0);
     return out;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "film/denoise_filter.h"
+#include "film/display_pixel.h"
 #include "film/film.h"
 #include "integrators/photon_timings.h"
 #include "integrators/render_counters.h"
@@ -33,7 +34,7 @@ struct GpuInfo {
 /// Probes device 0. Never throws; a missing driver or device is reported in `reason`.
 GpuInfo probeGpu();
 
-/// Device memory held by a GpuScene (bytes): the scene's arrays, the film and the ray buffers.
+/// Device memory held by a GpuScene (bytes): the scene's arrays, the film (with the viewer's picture) and the ray buffers.
 struct GpuMemory {
     SceneMemory scene;
     size_t film = 0, rays = 0;
@@ -64,6 +65,14 @@ public:
     void denoise(const DenoiseParams& params = {});
     /// Copies the device film into `film`.
     void readFilm(Film& film) const;
+    /// Makes the 8-bit sRGB picture of the device film on the device (film/display_pixel.h: layer
+    /// `display` at `exposureEv` stops), denoised first where `denoised` (the film's sums are kept, to
+    /// go on adding samples), into `rgba`: device memory of width x height x 4 bytes, rows from the
+    /// top (an OpenGL pixel buffer that CUDA has mapped), or where null this GpuScene's own RGB
+    /// picture, for readPicture. Returns when the picture is written.
+    void drawPicture(FilmDisplay display, float exposureEv, bool denoised, uint8_t* rgba = nullptr);
+    /// The picture drawPicture made last into its own buffer, copied to the host (RGB, 8 bits a channel).
+    Rgb8Image readPicture() const;
     /// The mean radiance of a fresh device film of settings.spp samples per pixel, like renderCpu's.
     LinearImage render(const Camera& camera, const RenderSettings& settings, RenderCounters& counters);
 

@@ -28,6 +28,8 @@ void GpuScene::setFilm(const Film&) { noCuda(); }
 void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, RenderCounters&) { noCuda(); }
 void GpuScene::denoise(const DenoiseParams&) { noCuda(); }
 void GpuScene::readFilm(Film&) const { noCuda(); }
+void GpuScene::drawPicture(FilmDisplay, float, bool, uint8_t*) { noCuda(); }
+Rgb8Image GpuScene::readPicture() const { noCuda(); }
 LinearImage GpuScene::render(const Camera&, const RenderSettings&, RenderCounters&) { noCuda(); }
 void GpuScene::renderPhotons(const Scene&, const Camera&, const RenderSettings&, SampleRange, RenderCounters&, PhotonTimings&) {
     noCuda();

@@ -36,14 +36,26 @@ ViewCamera viewCameraLookingAt(Vec3f position, Vec3f target) {
     return c;
 }
 
+ViewCamera viewCameraOverlooking(Vec3f target, float heading, float pitch, float distance) {
+    ViewCamera c;
+    c.heading = heading;
+    c.pitch = std::clamp(pitch, -89.0f, 89.0f);
+    c.pivotDistance = distance;
+    c.position = target - viewForward(c) * distance;
+    return c;
+}
+
 float CameraController::heightAboveGround() const {
     return std::min(probe_(camera_.position, Vec3f{0, -1, 0}, 1e5f), 1e5f);
 }
 
-Vec3f CameraController::lifted(Vec3f p) const {
+Vec3f CameraController::cleared(Vec3f p) const {
     if (!collide) return p;
-    const float below = probe_(p, Vec3f{0, -1, 0}, kClearance);
-    if (below < kClearance) p.y += kClearance - below;
+    // A sphere of kClearance about the camera, tested by six short rays: a move along a wall, which
+    // the ray of the move itself never meets, is pushed off it too. The ground (down) first.
+    constexpr Vec3f kAxes[] = {{0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}, {0, 0, -1}, {0, 0, 1}};
+    for (const Vec3f& axis : kAxes)
+        if (const float hit = probe_(p, axis, kClearance); hit < kClearance) p = p - axis * (kClearance - hit);
     return p;
 }
 
@@ -56,7 +68,7 @@ Vec3f CameraController::reachable(Vec3f to) const {
         const float hit = probe_(from, dir, len + kClearance);
         if (hit < len + kClearance) to = from + dir * std::max(0.0f, hit - kClearance);
     }
-    return lifted(to);
+    return cleared(to);
 }
 
 void CameraController::saveForUndo() {
@@ -95,7 +107,7 @@ bool CameraController::update(const CameraInput& in) {
 void CameraController::jumpTo(const ViewCamera& camera) {
     saveForUndo();
     camera_ = camera;
-    camera_.position = lifted(camera.position);  // a jump passes over what lies between
+    camera_.position = cleared(camera.position);  // a jump passes over what lies between
 }
 
 bool CameraController::undo() {

@@ -24,6 +24,9 @@ Vec3f viewForward(const ViewCamera& camera);
 Vec3f viewTarget(const ViewCamera& camera);
 /// The camera at `position` looking at `target` (distinct points).
 ViewCamera viewCameraLookingAt(Vec3f position, Vec3f target);
+/// The camera `distance` metres from `target`, looking at it towards `heading` (degrees clockwise
+/// from north) and `pitch` (degrees above the horizon; negative looks down); it orbits `target`.
+ViewCamera viewCameraOverlooking(Vec3f target, float heading, float pitch, float distance);
 
 enum class CameraMode { Orbit, Fly };
 
@@ -45,7 +48,7 @@ using CameraProbe = std::function<float(Vec3f origin, Vec3f dir, float maxDistan
 /// pivot. WASD move along the view's horizontal axes, E and Q up and down, at `speed` times the
 /// height above the ground (at least kMinSpeedHeight metres) per second; the wheel scales `speed`
 /// by kScrollFactor a step. With `collide`, a move stops kClearance metres short of any surface and
-/// the camera stays kClearance above the ground below it.
+/// the camera ends kClearance from every surface along the six axes (above the ground below it too).
 class CameraController {
 public:
     static constexpr float kDegreesPerPixel = 0.25f;
@@ -59,7 +62,7 @@ public:
     /// Applies one frame's input; true when the camera moved (the image must start over). A move
     /// that begins (a key or the button pressed after none) first saves the camera for undo().
     bool update(const CameraInput& input);
-    /// Moves to `camera` as one undoable step (a jump, a script's move), lifted above what lies below it.
+    /// Moves to `camera` as one undoable step (a jump, a script's move), cleared of the surfaces about it.
     void jumpTo(const ViewCamera& camera);
     /// Back to the camera before the last move; false when there is none.
     bool undo();
@@ -73,10 +76,10 @@ public:
     float heightAboveGround() const;
 
 private:
-    /// `p` lifted to kClearance above what lies below it (with `collide`).
-    Vec3f lifted(Vec3f p) const;
-    /// `to`, or the point kClearance short of the first surface between the camera and `to`, lifted
-    /// to kClearance above what lies below.
+    /// `p` moved to kClearance from the surfaces within kClearance of it along the six axes, the
+    /// ground below first (with `collide`).
+    Vec3f cleared(Vec3f p) const;
+    /// `to`, or the point kClearance short of the first surface between the camera and `to`, then cleared.
     Vec3f reachable(Vec3f to) const;
     void saveForUndo();
 

@@ -19,7 +19,7 @@ public:
         if (!node.is_object()) fail("", "expected an object");
         for (const auto& [key, value] : node.items())
             if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys))
-                fail(key, "unknown key (keys: frame, load, set, mode, input, undo, jump, screenshot, width, height, spp, save_scene, quit)");
+                fail(key, "unknown key (keys: frame, load, set, mode, input, undo, jump, goto, screenshot, width, height, spp, save_scene, quit)");
     }
 
     ScriptStep read() {
@@ -42,6 +42,7 @@ public:
                 fail("jump", "need |LON| <= 180, |LAT| <= 90 degrees and 0 <= ALTITUDE <= 1e6 metres");
             s.jump = std::array<double, 3>{lon, lat, alt};
         }
+        s.goTo = text("goto", "the name of an OSM feature");
         s.screenshot = text("screenshot");
         s.width = uint32_t(number("width", 1, 65536, true).value_or(0));
         s.height = uint32_t(number("height", 1, 65536, true).value_or(0));
@@ -53,7 +54,7 @@ public:
     }
 
 private:
-    static constexpr const char* kKeys[] = {"frame", "load", "set", "mode", "input", "undo", "jump", "screenshot",
+    static constexpr const char* kKeys[] = {"frame", "load", "set", "mode", "input", "undo", "jump", "goto", "screenshot",
                                             "width", "height", "spp", "save_scene", "quit"};
 
     [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
@@ -76,9 +77,9 @@ private:
         return node_[key].get<bool>();
     }
 
-    std::string text(const char* key) const {
+    std::string text(const char* key, const char* what = "a file name") const {
         if (!node_.contains(key)) return {};
-        if (!node_[key].is_string() || node_[key].get<std::string>().empty()) fail(key, "expected a file name");
+        if (!node_[key].is_string() || node_[key].get<std::string>().empty()) fail(key, std::string("expected ") + what);
         return node_[key].get<std::string>();
     }
 

@@ -3,6 +3,7 @@
 //   {"steps": [{"frame": 0, "load": "city.json"}, {"frame": 0, "set": {"film": {"exposure": 1}}},
 //              {"frame": 4, "input": {"keys": "W", "mouse": [40, 0], "seconds": 0.5, "mode": "fly"}},
 //              {"frame": 8, "undo": true}, {"frame": 9, "jump": [-122.397, 37.789, 300]},
+//              {"frame": 10, "goto": "Ferry Building"},
 //              {"frame": 12, "screenshot": "a.png", "width": 1920, "height": 1080, "spp": 64},
 //              {"frame": 16, "save_scene": "a.json"}, {"frame": 20, "quit": true}]}
 // whose steps run, in order, before the frame of their number is rendered.
@@ -29,6 +30,7 @@ struct ScriptStep {
     std::optional<CameraInput> input;        ///< keys held and mouse moved (dragging) for `seconds`
     bool undo = false;                       ///< the camera's last move undone
     std::optional<std::array<double, 3>> jump;   ///< LON, LAT (degrees), ALTITUDE (metres above the ground)
+    std::string goTo;                        ///< "goto": the name of an OSM feature to look down on; empty: none
     std::string screenshot;                  ///< PNG or EXR rendered offline; empty: none
     uint32_t width = 0, height = 0, spp = 0; ///< of the screenshot; 0: the film's size, the frames taken so far
     std::string saveScene;                   ///< the scene file written; empty: none
