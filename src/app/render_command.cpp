@@ -182,7 +182,8 @@ nlohmann::json bytesByKind(const SceneMemory& memory, const std::map<std::string
 /// Writes --stats: counts, what was dropped and repaired, memory (the scene's, the peak host and
 /// device bytes), timings, rays/s and the scene description.
 void writeStats(const RenderOptions& o, const PreparedScene& prepared, const RenderSettings& settings,
-                const RenderCounters& counters, const DeviceReport& device, size_t threads, double secondsWrite) {
+                const RenderCounters& counters, const DeviceReport& device, const std::vector<uint32_t>& tilesByRank,
+                size_t threads, double secondsWrite) {
     const BuildSummary& summary = prepared.summary;
     const Scene& scene = prepared.scene;
     SceneMemory memory = scene.memory();
@@ -220,7 +221,7 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
                      {"render", counters.seconds}, {"denoise", device.secondsDenoise}, {"write", secondsWrite}}},
         {"seconds_render", counters.seconds},
         {"rays", counters.rays},
-        {"tiles_by_rank", device.tilesByRank},
+        {"tiles_by_rank", tilesByRank},   // under mpirun (docs/scale.md); empty otherwise
         {"rays_per_second", counters.seconds > 0 ? double(counters.rays) / counters.seconds : 0.0},
         // The scene as a scene file has it (its order dropped: the stats' object sorts its keys).
         {"scene", nlohmann::json(sceneToJson(o.scene))},
@@ -264,8 +265,9 @@ void runRender(const RenderOptions& o, const MpiWorld* world) {
     RenderCounters counters;
     DeviceReport device;
     Film image(settings.width, settings.height, aovs);
+    std::vector<uint32_t> tilesByRank;
     if (world && world->ranks() > 1)
-        renderAcrossRanks(*world, prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image,
+        tilesByRank = renderAcrossRanks(*world, prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image,
                           film.denoise, run.device, counters, device);
     else
         renderOnDevice(prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image, film.denoise,
@@ -276,7 +278,7 @@ void runRender(const RenderOptions& o, const MpiWorld* world) {
     writeFilm(image, film.output, FilmOutputOptions{film.exposure, film.exrFloat, layers});
     double secondsWrite = secondsSince(t0);
 
-    if (!run.statsFile.empty()) writeStats(o, prepared, settings, counters, device, threads, secondsWrite);
+    if (!run.statsFile.empty()) writeStats(o, prepared, settings, counters, device, tilesByRank, threads, secondsWrite);
     std::string also;
     for (const std::string* file : {&run.statsFile, &o.saveSceneFile})
         if (!file->empty()) also += " and " + *file;

@@ -7,7 +7,7 @@
 
 namespace urbis {
 
-void renderAcrossRanks(const MpiWorld& world, const Scene& scene, const Camera& camera, const RenderSettings& settings,
+std::vector<uint32_t> renderAcrossRanks(const MpiWorld& world, const Scene& scene, const Camera& camera, const RenderSettings& settings,
                        SampleRange samples, Film& film, bool denoise, const std::string& device,
                        RenderCounters& counters, DeviceReport& report) {
     if (device == "cuda")
@@ -28,10 +28,10 @@ void renderAcrossRanks(const MpiWorld& world, const Scene& scene, const Camera& 
     counters.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     counters.rays = share.rays;
     report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}, 0.0, PhotonTimings{}};
-    report.tilesByRank = share.tilesByRank;
     const auto denoiseStart = std::chrono::steady_clock::now();
     if (denoise && world.isRoot()) denoiseCpu(film);
     report.secondsDenoise = std::chrono::duration<double>(std::chrono::steady_clock::now() - denoiseStart).count();
+    return share.tilesByRank;
 }
 
 } // namespace urbis
