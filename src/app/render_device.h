@@ -7,7 +7,6 @@
 #include "gpu/gpu_backend.h"
 
 #include <string>
-#include <vector>
 
 namespace urbis {
 
@@ -18,7 +17,6 @@ struct DeviceReport {
     GpuMemory memory;             ///< device memory by kind (zero on the CPU)
     double secondsDenoise = 0;    ///< wall time of the denoiser (zero without)
     PhotonTimings photons;        ///< the photon integrators' passes (zero for the path tracer)
-    std::vector<uint32_t> tilesByRank;  ///< under mpirun: the tiles each rank rendered; empty otherwise
 };
 
 /// The CPU's model name from /proc/cpuinfo, or "cpu" where unknown.
