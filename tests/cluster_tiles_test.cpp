@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
+#include <tuple>
 
 using namespace urbis;
 
