@@ -50,6 +50,7 @@ LAYERS = {
     "description": 13,  # the scene description and its JSON scene files
     "cpu": 14,          # the CPU backend (TBB)
     "gpu": 14,          # the CUDA backend; shares nothing with cpu/ but what lies below both
+    "cluster": 14,      # MPI: the job's ranks, the tile queue of one frame, frames spread over ranks
     "viewer": 14,       # the viewer's camera, input handling, scene edits and scripts, apart from any window
     "app": 15,          # the urbis command
 }

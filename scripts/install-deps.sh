@@ -12,8 +12,10 @@ packages=(
   libgtest-dev libbenchmark-dev libembree-dev                           # tests, benchmarks, speed reference
   python-osmnx-doc                                                      # a tiny real OSM extract for the tests
   python3                                                               # scripts/check_layers.py (ctest: layers)
+  python3-yaml                                                          # scripts/openjd/check_template.py (ctest: openjd_template)
   libgdal-dev gdal-bin                                                  # DEM rasters for the terrain (--dem); gdalbuildvrt for mosaics
   libglfw3-dev libimgui-dev libgl-dev                                   # the viewer's window (urbis view)
+  libopenmpi-dev openmpi-bin                                            # mpirun -n N urbis render (docs/scale.md)
   xvfb xauth libgl1-mesa-dri                                            # the viewer's tests: a display without a screen
 )
 

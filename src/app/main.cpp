@@ -5,9 +5,11 @@
 #include "app/sun_command.h"
 #include "app/view_command.h"
 #include "base/input_error.h"
+#include "cluster/mpi_world.h"
 
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <new>
 
 namespace {
@@ -58,9 +60,16 @@ int main(int argc, char** argv) {
     urbis::addBenchCommand(app, bench);
     urbis::addSunCommand(app, sun);
     urbis::addViewCommand(app, view);
+    std::unique_ptr<urbis::MpiWorld> world;  // joined only under mpirun
+    // A rank that fails ends the whole job: the others would wait for its tiles forever.
+    auto fail = [&](int code) {
+        if (world && world->ranks() > 1) world->abort(code);
+        return code;
+    };
     try {
+        if (urbis::launchedByMpirun()) world = std::make_unique<urbis::MpiWorld>();
         app.parse(argc, argv);
-        if (app.got_subcommand("render")) urbis::runRender(render.resolve());
+        if (app.got_subcommand("render")) urbis::runRender(render.resolve(), world.get());
         if (app.got_subcommand("inspect")) urbis::runInspect(inspect);
         if (app.got_subcommand("bench")) urbis::runBench(bench.resolve());
         if (app.got_subcommand("sun")) urbis::runSun(sun);
@@ -69,17 +78,17 @@ int main(int argc, char** argv) {
         return app.exit(e);  // --help, --help-all, --version
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "urbis: %s (see urbis --help)\n", usageMessage(app, e, argc, argv).c_str());
-        return int(urbis::FailureKind::Usage);
+        return fail(int(urbis::FailureKind::Usage));
     } catch (const urbis::InputError& e) {
         std::fprintf(stderr, "urbis: %s\n", e.what());
-        return int(e.kind());
+        return fail(int(e.kind()));
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "urbis: out of memory (try fewer buildings, a smaller --bbox or a smaller image)\n");
-        return int(urbis::FailureKind::OutOfMemory);
+        return fail(int(urbis::FailureKind::OutOfMemory));
     } catch (const std::exception& e) {
         // A library's own exception no check above foresaw: still one line and an exit code, never an abort.
         std::fprintf(stderr, "urbis: %s (an unexpected failure: please report it with the input)\n", e.what());
-        return int(urbis::FailureKind::BadInput);
+        return fail(int(urbis::FailureKind::BadInput));
     }
     return 0;
 }

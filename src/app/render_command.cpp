@@ -7,6 +7,7 @@
 #include "app/output_paths.h"
 #include "app/planet_scene.h"
 #include "app/render_device.h"
+#include "app/render_ranks.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
 #include "citygen/city_terrain.h"
@@ -181,7 +182,8 @@ nlohmann::json bytesByKind(const SceneMemory& memory, const std::map<std::string
 /// Writes --stats: counts, what was dropped and repaired, memory (the scene's, the peak host and
 /// device bytes), timings, rays/s and the scene description.
 void writeStats(const RenderOptions& o, const PreparedScene& prepared, const RenderSettings& settings,
-                const RenderCounters& counters, const DeviceReport& device, size_t threads, double secondsWrite) {
+                const RenderCounters& counters, const DeviceReport& device, const std::vector<uint32_t>& tilesByRank,
+                size_t threads, double secondsWrite) {
     const BuildSummary& summary = prepared.summary;
     const Scene& scene = prepared.scene;
     SceneMemory memory = scene.memory();
@@ -219,6 +221,7 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
                      {"render", counters.seconds}, {"denoise", device.secondsDenoise}, {"write", secondsWrite}}},
         {"seconds_render", counters.seconds},
         {"rays", counters.rays},
+        {"tiles_by_rank", tilesByRank},   // under mpirun (docs/scale.md); empty otherwise
         {"rays_per_second", counters.seconds > 0 ? double(counters.rays) / counters.seconds : 0.0},
         // The scene as a scene file has it (its order dropped: the stats' object sorts its keys).
         {"scene", nlohmann::json(sceneToJson(o.scene))},
@@ -234,7 +237,7 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
 
 } // namespace
 
-void runRender(const RenderOptions& o) {
+void runRender(const RenderOptions& o, const MpiWorld* world) {
     const auto start = Clock::now();
     const RunOptions& run = o.run;
     const FilmDescription& film = o.scene.film;
@@ -255,20 +258,27 @@ void runRender(const RenderOptions& o) {
 
     PreparedScene prepared = prepareScene(o.scene, run.strict, limit);
     // Written once the input has proved good, before the render's time is spent.
-    if (!o.saveSceneFile.empty()) writeSceneFile(o.scene, o.saveSceneFile);
+    const bool writes = !world || world->isRoot();
+    if (writes && !o.saveSceneFile.empty()) writeSceneFile(o.scene, o.saveSceneFile);
     RenderSettings settings = renderSettingsOf(o.scene.integrator, film);
     applyPhotonSettings(o.scene.photons, settings);
     RenderCounters counters;
     DeviceReport device;
     Film image(settings.width, settings.height, aovs);
-    renderOnDevice(prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image, film.denoise,
-                   run.device, isatty(2), run.verbose, counters, device);
+    std::vector<uint32_t> tilesByRank;
+    if (world && world->ranks() > 1)
+        tilesByRank = renderAcrossRanks(*world, prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image,
+                          film.denoise, run.device, counters, device);
+    else
+        renderOnDevice(prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image, film.denoise,
+                       run.device, isatty(2), run.verbose, counters, device);
+    if (!writes) return;
 
     auto t0 = Clock::now();
     writeFilm(image, film.output, FilmOutputOptions{film.exposure, film.exrFloat, layers});
     double secondsWrite = secondsSince(t0);
 
-    if (!run.statsFile.empty()) writeStats(o, prepared, settings, counters, device, threads, secondsWrite);
+    if (!run.statsFile.empty()) writeStats(o, prepared, settings, counters, device, tilesByRank, threads, secondsWrite);
     std::string also;
     for (const std::string* file : {&run.statsFile, &o.saveSceneFile})
         if (!file->empty()) also += " and " + *file;

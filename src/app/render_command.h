@@ -2,6 +2,7 @@
 #pragma once
 
 #include "app/scene_options.h"
+#include "cluster/mpi_world.h"
 #include "scene/geometry_modes.h"
 #include "description/scene_description.h"
 #include "scene/camera.h"
@@ -75,7 +76,8 @@ void addRunOptions(CLI::App& cmd, RunOptions& options);
 
 /// Checks the outputs and the image's memory, then renders and writes the image, --stats and
 /// --save-scene, and ends with one line on stdout saying what it wrote and how long it took.
-/// Throws InputError.
-void runRender(const RenderOptions& options);
+/// Under mpirun (`world` of more than one rank) every rank builds the scene, the ranks share the
+/// frame's tiles (renderAcrossRanks) and rank 0 alone writes the files. Throws InputError.
+void runRender(const RenderOptions& options, const MpiWorld* world = nullptr);
 
 } // namespace urbis

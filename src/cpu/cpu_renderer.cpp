@@ -40,19 +40,19 @@ private:
     int shown_ = -1;
 };
 
-} // namespace
-
-void renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
-               Film& film, bool showProgress, RenderCounters& counters) {
+/// Adds samples `samples` of the pixels of `rect` in 16x16 tiles over TBB's pool.
+void renderRect(const SceneView& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                const PixelRect& rect, Film& film, ProgressBar& progress, RenderCounters& counters) {
     if (film.width != settings.width || film.height != settings.height)
         throw std::invalid_argument("renderCpu: the film's size is not the settings' image size");
+    if (rect.x1 > film.width || rect.y1 > film.height || rect.x0 > rect.x1 || rect.y0 > rect.y1)
+        throw std::invalid_argument("renderCpu: the rectangle is not inside the film");
     const FilmView view = film.view();
     std::atomic<uint64_t> rays{0};
-    ProgressBar progress(showProgress, film.pixels());
     auto start = std::chrono::steady_clock::now();
     constexpr size_t kTile = 16;
     tbb::parallel_for(
-        tbb::blocked_range2d<uint32_t>(0, settings.height, kTile, 0, settings.width, kTile),
+        tbb::blocked_range2d<uint32_t>(rect.y0, rect.y1, kTile, rect.x0, rect.x1, kTile),
         [&](const tbb::blocked_range2d<uint32_t>& tile) {
             uint64_t tileRays = 0;
             for (uint32_t y = tile.rows().begin(); y < tile.rows().end(); ++y)
@@ -66,6 +66,20 @@ void renderCpu(const SceneView& scene, const Camera& camera, const RenderSetting
         tbb::simple_partitioner());
     counters.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     counters.rays = rays;
+}
+
+} // namespace
+
+void renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+               Film& film, bool showProgress, RenderCounters& counters) {
+    ProgressBar progress(showProgress, film.pixels());
+    renderRect(scene, camera, settings, samples, PixelRect{0, 0, film.width, film.height}, film, progress, counters);
+}
+
+void renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+               const PixelRect& rect, Film& film, RenderCounters& counters) {
+    ProgressBar progress(false, rect.pixels());
+    renderRect(scene, camera, settings, samples, rect, film, progress, counters);
 }
 
 LinearImage renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings,

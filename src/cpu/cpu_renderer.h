@@ -3,6 +3,7 @@
 #pragma once
 
 #include "film/film.h"
+#include "film/pixel_rect.h"
 #include "integrators/render_counters.h"
 #include "scene/camera.h"
 #include "scene/render_settings.h"
@@ -18,6 +19,11 @@ namespace urbis {
 /// progress bar on stderr.
 void renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
                Film& film, bool showProgress, RenderCounters& counters);
+
+/// Adds samples `samples` of the pixels in `rect` only, as renderCpu does for every pixel: the bits of
+/// those pixels are the same whichever rectangles a film is rendered in (the tiles of an MPI render).
+void renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+               const PixelRect& rect, Film& film, RenderCounters& counters);
 
 /// The mean radiance of a fresh film of settings.spp samples per pixel.
 LinearImage renderCpu(const SceneView& scene, const Camera& camera, const RenderSettings& settings,

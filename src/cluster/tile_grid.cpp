@@ -1,0 +1,24 @@
+#include "cluster/tile_grid.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace urbis {
+
+std::vector<PixelRect> tilesOf(uint32_t width, uint32_t height, uint32_t tileSize) {
+    if (tileSize == 0) throw std::invalid_argument("tilesOf: a tile of 0 pixels");
+    std::vector<PixelRect> tiles;
+    for (uint32_t y = 0; y < height; y += tileSize)
+        for (uint32_t x = 0; x < width; x += tileSize)
+            tiles.push_back({x, y, std::min(width, x + tileSize), std::min(height, y + tileSize)});
+    return tiles;
+}
+
+uint32_t tileSizeFor(uint32_t width, uint32_t height, int ranks) {
+    uint32_t size = 64;
+    auto tiles = [&](uint32_t side) { return size_t((width + side - 1) / side) * ((height + side - 1) / side); };
+    while (size > 16 && tiles(size) < 4 * size_t(ranks)) size /= 2;
+    return size;
+}
+
+} // namespace urbis

@@ -1,0 +1,74 @@
+// `mpirun -n 2 urbis render` end to end: the same PNG as one process, and a rank killed mid-frame
+// ending the job non-zero with no output. Skips, saying why, without mpirun or an MPI build.
+#include "cli_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <unistd.h>
+
+using namespace urbis::test;
+
+namespace {
+
+const std::string kSmall = "render --width 96 --height 64 --spp 2 --buildings 60 --threads 1 ";
+
+/// mpirun for `ranks` ranks on however many cores there are, as root where CI runs as root; empty
+/// (with the reason in `why`) where the test cannot run.
+std::string mpirunPrefix(int ranks, std::string& why) {
+    if (!URBIS_TESTS_MPI) {
+        why = "urbis was built without MPI (libopenmpi-dev not found)";
+        return "";
+    }
+    if (std::system("command -v mpirun >/dev/null 2>&1") != 0) {
+        why = "no mpirun on PATH (openmpi-bin)";
+        return "";
+    }
+    return "mpirun -n " + std::to_string(ranks) + " --oversubscribe" + (geteuid() == 0 ? " --allow-run-as-root" : "");
+}
+
+} // namespace
+
+TEST(MpiRender, TwoRanksWriteThePngOfOneProcess) {
+    std::string why;
+    const std::string mpirun = mpirunPrefix(2, why);
+    if (mpirun.empty()) GTEST_SKIP() << why;
+    auto dir = scratchDir("mpi_two_ranks");
+    CommandResult one = runUrbis(kSmall + "--out one.png", dir);
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    CommandResult two = runUrbis(kSmall + "--out two.png --stats stats.json", dir, mpirun);
+    ASSERT_EQ(two.exitCode, 0) << two.err;
+    EXPECT_EQ(readFile(dir / "one.png"), readFile(dir / "two.png")) << "the gathered film is not the one process's";
+    // Rank 0 alone writes: one line on stdout, and the stats say which rank rendered what.
+    EXPECT_EQ(std::count(two.out.begin(), two.out.end(), '\n'), 1) << two.out;
+    const nlohmann::json stats = nlohmann::json::parse(readFile(dir / "stats.json"));
+    const std::vector<uint32_t> tiles = stats.at("tiles_by_rank").get<std::vector<uint32_t>>();
+    ASSERT_EQ(tiles.size(), 2u);
+    EXPECT_EQ(tiles[0] + tiles[1], 24u) << "96x64 in tiles of 16 (tileSizeFor)";
+}
+
+TEST(MpiRender, KilledRankEndsTheJobWithoutOutput) {
+    std::string why;
+    const std::string mpirun = mpirunPrefix(2, why);
+    if (mpirun.empty()) GTEST_SKIP() << why;
+    auto dir = scratchDir("mpi_killed_rank");
+    // URBIS_TEST_KILL_RANK (src/cluster/mpi_world.cpp) kills rank 1 by SIGKILL when its first tile arrives.
+    CommandResult r = runUrbis(kSmall + "--out killed.png --stats killed.json", dir,
+                               "URBIS_TEST_KILL_RANK=1 " + mpirun + " -x URBIS_TEST_KILL_RANK");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find("signal 9"), std::string::npos) << "mpirun names the rank and its signal:\n" << r.err;
+    for (const char* file : {"killed.png", "killed.png.tmp", "killed.json", "killed.json.tmp"})
+        EXPECT_FALSE(std::filesystem::exists(dir / file)) << file;
+}
+
+TEST(MpiRender, PhotonIntegratorIsRefusedOnEveryRank) {
+    std::string why;
+    const std::string mpirun = mpirunPrefix(2, why);
+    if (mpirun.empty()) GTEST_SKIP() << why;
+    auto dir = scratchDir("mpi_photons");
+    CommandResult r = runUrbis(kSmall + "--integrator photon-map --out p.png", dir, mpirun);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find("only the path integrator"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "p.png"));
+}
