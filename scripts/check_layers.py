@@ -51,6 +51,7 @@ LAYERS = {
     "cpu": 14,          # the CPU backend (TBB)
     "gpu": 14,          # the CUDA backend; shares nothing with cpu/ but what lies below both
     "viewer": 14,       # the viewer's camera, input handling, scene edits and scripts, apart from any window
+    "export": 14,       # the triangle twin as glTF and OBJ files (tinygltf), whole or in tiles
     "app": 15,          # the urbis command
 }
 

@@ -15,6 +15,7 @@ packages=(
   libgdal-dev gdal-bin                                                  # DEM rasters for the terrain (--dem); gdalbuildvrt for mosaics
   libglfw3-dev libimgui-dev libgl-dev                                   # the viewer's window (urbis view)
   xvfb xauth libgl1-mesa-dri                                            # the viewer's tests: a display without a screen
+  libtinygltf-dev                                                       # glTF export (urbis export)
 )
 
 missing=()
