@@ -52,6 +52,7 @@ LAYERS = {
     "gpu": 14,          # the CUDA backend; shares nothing with cpu/ but what lies below both
     "cluster": 14,      # MPI: the job's ranks, the tile queue of one frame, frames spread over ranks
     "viewer": 14,       # the viewer's camera, input handling, scene edits and scripts, apart from any window
+    "export": 14,       # the triangle twin as glTF and OBJ files (tinygltf), whole or in tiles
     "app": 15,          # the urbis command
 }
 

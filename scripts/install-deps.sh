@@ -17,6 +17,7 @@ packages=(
   libglfw3-dev libimgui-dev libgl-dev                                   # the viewer's window (urbis view)
   libopenmpi-dev openmpi-bin                                            # mpirun -n N urbis render (docs/scale.md)
   xvfb xauth libgl1-mesa-dri                                            # the viewer's tests: a display without a screen
+  libtinygltf-dev                                                       # glTF export (urbis export)
 )
 
 missing=()

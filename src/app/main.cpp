@@ -1,5 +1,6 @@
-// The urbis command: render, inspect, bench, sun, view.
+// The urbis command: render, inspect, bench, sun, view, export.
 #include "app/bench_command.h"
+#include "app/export_command.h"
 #include "app/inspect_command.h"
 #include "app/render_command.h"
 #include "app/sun_command.h"
@@ -27,7 +28,7 @@ const char* const kExitCodes = "Exit codes:\n"
 /// The parser's message, or for a first argument that is no subcommand, one naming it.
 std::string usageMessage(const CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
     if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-')
-        return std::string("unknown subcommand '") + argv[1] + "' (commands: render, inspect, bench, sun, view)";
+        return std::string("unknown subcommand '") + argv[1] + "' (commands: render, inspect, bench, sun, view, export)";
     return e.what();
 }
 
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
                  "  urbis inspect city.osm.pbf --json --ids\n"
                  "  urbis render --time 2024-06-21T21:30+02:00 --exposure 8   # the sun, moon and stars of that hour\n"
                  "  urbis sun --location -122.4,37.79 --time 2024-06-21T20:30-07:00 --json\n"
-                 "  urbis view --osm city.osm.pbf --width 960 --height 540   # fly through it; save the scene from the panel\n"};
+                 "  urbis view --osm city.osm.pbf --width 960 --height 540   # fly through it; save the scene from the panel\n"
+                 "  urbis export --osm city.osm.pbf --out city.glb           # the triangle twin for Blender and other tools\n"};
     app.footer(kExitCodes);
     app.set_version_flag("--version", "urbis " URBIS_VERSION);
     app.require_subcommand(1);
@@ -55,11 +57,13 @@ int main(int argc, char** argv) {
     urbis::BenchCommandLine bench;
     urbis::SunOptions sun;
     urbis::ViewCommandLine view;
+    urbis::ExportCommandLine exportLine;
     urbis::addRenderCommand(app, render);
     urbis::addInspectCommand(app, inspect);
     urbis::addBenchCommand(app, bench);
     urbis::addSunCommand(app, sun);
     urbis::addViewCommand(app, view);
+    urbis::addExportCommand(app, exportLine);
     std::unique_ptr<urbis::MpiWorld> world;  // joined only under mpirun
     // A rank that fails ends the whole job: the others would wait for its tiles forever.
     auto fail = [&](int code) {
@@ -74,6 +78,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("bench")) urbis::runBench(bench.resolve());
         if (app.got_subcommand("sun")) urbis::runSun(sun);
         if (app.got_subcommand("view")) urbis::runView(view);
+        if (app.got_subcommand("export")) urbis::runExport(exportLine);
     } catch (const CLI::Success& e) {
         return app.exit(e);  // --help, --help-all, --version
     } catch (const CLI::ParseError& e) {

@@ -8,6 +8,7 @@
 #include "app/planet_scene.h"
 #include "app/render_device.h"
 #include "app/render_ranks.h"
+#include "app/scene_city.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
 #include "citygen/city_terrain.h"
@@ -17,13 +18,11 @@
 #include "description/scene_json.h"
 #include "description/scene_parts.h"
 #include "io/atomic_file.h"
-#include "layout/city_layout.h"
 #include "base/input_error.h"
 #include "film/film_output.h"
 #include "lights/light_build.h"
 #include "media/atmosphere_build.h"
 #include "media/cloud_build.h"
-#include "osm/osm_import.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -58,21 +57,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-CityModel loadCity(const SourceDescription& source) {
-    if (source.osm.empty()) return generateCity(layoutParamsOf(source));
-    return importOsm(source.osm, importOptionsOf(source));
-}
-
-/// Scales every building's heights by the source's height scale.
-void scaleHeights(CityModel& city, float scale) {
-    if (scale == 1.0f) return;
-    for (Building& b : city.buildings) {
-        b.height *= scale;
-        b.minHeight *= scale;
-        b.roofHeight *= scale;
-    }
-}
 
 /// Says on stderr what is wrong with the camera, or when `strict` fails on the first problem.
 void checkCamera(bool strict, const Camera& camera, const CityModel& city, const Bounds3f& cityBounds) {
@@ -116,24 +100,14 @@ BuildSummary summarise(const CityModel& city, const CityMesh& mesh) {
 PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memoryLimit) {
     if (d.planet) return preparePlanetScene(d);
     PreparedScene p;
-    CityMeshOptions meshOptions;
-    meshOptions.geometry = p.geometry = d.geometry.modes;
-    meshOptions.materials = d.materials.city;
-    meshOptions.memoryLimit = memoryLimit;
-    meshOptions.streets = d.geometry.streets;
-    if (d.geometry.traffic != "auto")
-        meshOptions.traffic = d.geometry.traffic == "left" ? TrafficSide::Left : TrafficSide::Right;
-    meshOptions.hour = hourOf(d);
-    meshOptions.water = d.water;
-    meshOptions.trees = d.trees;
+    const CityMeshOptions meshOptions = cityMeshOptionsOf(d, memoryLimit);
+    p.geometry = meshOptions.geometry;
     CityMesh mesh;
     TerrainField terrain;
     CelestialLights celestial;
     {
         auto t0 = Clock::now();
-        CityModel city = loadCity(d.source);
-        applyColourOverrides(d.materials, city);
-        scaleHeights(city, d.source.heightScale);
+        CityModel city = loadSceneCity(d);
         p.secondsImport = secondsSince(t0);
 
         t0 = Clock::now();
