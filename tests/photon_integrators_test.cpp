@@ -276,8 +276,9 @@ TEST(PhotonBuffers, VisibilityFlagsAndPersistence) {
 
 // On the street canyon, the photon map and the photon buffers converge to the path tracer's image:
 // the image's mean luminance, and the mean relative error of 8 x 8 pixel blocks' luminance, against a
-// 1024 spp path-traced reference (64 passes of 50,000 photons: measured -1.7 % and +2.6 % on the
-// mean, the blocks' error mostly the photons' noise).
+// 1024 spp path-traced reference (64 passes of 50,000 photons: measured -1.7 % (map) and +2.4 %
+// (buffers) on the mean, the goal 2 % for the map and the stated 3 % for the buffers; blocks
+// 5.1 % and 6.9 %, mostly the photons' noise). The same seed gives the same images for any thread count.
 TEST(Photons, StreetCanyonConvergesToThePathTracer) {
     const Scene scene = test::streetCanyonScene();
     RenderSettings settings;
@@ -294,10 +295,10 @@ TEST(Photons, StreetCanyonConvergesToThePathTracer) {
     const LinearImage map = renderPhotons(scene, camera, settings, IntegratorKind::PhotonMap);
     const LinearImage buffers = renderPhotons(scene, camera, settings, IntegratorKind::PhotonBuffers);
     const double mean = meanLuminance(reference);
-    EXPECT_NEAR(meanLuminance(map) / mean, 1.0, 0.04) << "photon map";
-    EXPECT_NEAR(meanLuminance(buffers) / mean, 1.0, 0.04) << "photon buffers";
-    EXPECT_LT(blockRelativeError(map, reference, 8), 0.12) << "photon map";
-    EXPECT_LT(blockRelativeError(buffers, reference, 8), 0.12) << "photon buffers";
+    EXPECT_NEAR(meanLuminance(map) / mean, 1.0, 0.02) << "photon map";
+    EXPECT_NEAR(meanLuminance(buffers) / mean, 1.0, 0.03) << "photon buffers";
+    EXPECT_LT(blockRelativeError(map, reference, 8), 0.07) << "photon map";
+    EXPECT_LT(blockRelativeError(buffers, reference, 8), 0.08) << "photon buffers";
     std::printf("street canyon: mean luminance path %.5f, map %.5f, buffers %.5f; 8 x 8 block error map %.4f, buffers %.4f\n",
                 mean, meanLuminance(map), meanLuminance(buffers), blockRelativeError(map, reference, 8),
                 blockRelativeError(buffers, reference, 8));
