@@ -3,9 +3,8 @@
 // facades by the way they face and the half of the block they stand in, projected onto the sides of its
 // box (the paper's cylindrical projection, whose Jacobian vanishes on a wall through the block's axis,
 // made a box), its roofs and its ground orthographically, looked up in O(1) at the camera pass's first
-// diffuse hit. A texel holds
-// irradiance (the photons' flux over the surface area it covers), splatted bilinearly so that the
-// buffer is anti-aliased, in 64-bit fixed point so that the sums do not depend on the splats' order.
+// diffuse hit. A texel holds irradiance (the photons' flux over the surface area it covers), splatted
+// bilinearly so that the buffer is anti-aliased, in 64-bit fixed point so that the sums do not depend on the splats' order.
 // docs/photons.md § Photon buffers.
 #pragma once
 
@@ -61,7 +60,8 @@ URBIS_HD inline BufferPoint projectOntoBlock(const PhotonBlock& block, PhotonLay
     }
     // Orthographic along the way the facade faces onto the side of the box: a texel covers its
     // rectangle of the side over the cosine between the facade and the side, at least 0.61 (the
-    // facing is the larger horizontal component of a normal at most 60 degrees from horizontal).
+    // facing is the larger horizontal component of a normal at most 60 degrees from horizontal; the
+    // clamp at 0.5 only guards that bound).
     const bool alongX = facadeLayerAlongX(layer);
     const float lo = alongX ? block.lo.x : block.lo.z, extent = fmaxf(alongX ? block.hi.x - lo : block.hi.z - lo, 1e-3f);
     const float height = fmaxf(block.hi.y - block.lo.y, 1e-3f);
