@@ -4,8 +4,8 @@
 // box (the paper's cylindrical projection, whose Jacobian vanishes on a wall through the block's axis,
 // made a box), its roofs and its ground orthographically, looked up in O(1) at the camera pass's first
 // diffuse hit. A texel holds irradiance (the photons' flux over the surface area it covers), splatted
-// bilinearly so that the buffer is anti-aliased, in 64-bit fixed point so that the sums do not depend on the splats' order.
-// docs/photons.md § Photon buffers.
+// bilinearly so that the buffer is anti-aliased, in 64-bit fixed point so that the sums do not depend
+// on the splats' order. docs/photons.md § Photon buffers.
 #pragma once
 
 #include "geometry/surface_hit.h"
