@@ -92,48 +92,39 @@ TEST(PhotonBuffers, BlocksOfTheCanyonAreItsTwoRows) {
 }
 
 // Every facade and ground point of a block maps to one texel, and that texel's centre maps back to
-// a point of the same surface within the texel's extent there.
+// a point of the same surface within half a texel.
 TEST(PhotonBuffers, ParameterisationRoundTripWithinATexel) {
     const Scene scene = test::streetCanyonScene();
     PhotonBlockSet set = buildPhotonBlocks(scene);
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    uint32_t checked = 0, points = 0;
+    uint32_t checked = 0;
     for (uint32_t level = 0; level < kPhotonLevels; ++level)
         for (PhotonBlock& block : set.blocks) {
             layOutPhotonBlock(block, level, 0.5f, 0, 0);
             for (int i = 0; i < 2000; ++i) {
-                // A facade point: on the street side or the far side of the row, at any height.
-                const float x = unit(rng) < 0.5f ? block.lo.x : block.hi.x;
-                const Vec3f n{x == block.lo.x ? -1.0f : 1.0f, 0, 0};
-                const Vec3f p{x, block.lo.y + unit(rng) * (block.hi.y - block.lo.y) * 0.6f, block.lo.z + unit(rng) * (block.hi.z - block.lo.z)};
-                const PhotonLayer layer = photonLayerOf(n, 1);
+                // A facade point on any side of the block's box (east, south, west, north), at any height.
+                const uint32_t side = uint32_t(unit(rng) * 4.0f) & 3u;
+                const Vec3f n = side == 0 ? Vec3f{1, 0, 0} : side == 1 ? Vec3f{0, 0, 1} : side == 2 ? Vec3f{-1, 0, 0} : Vec3f{0, 0, -1};
+                const bool alongX = side & 1u;
+                const float lo = alongX ? block.lo.x : block.lo.z, extent = alongX ? block.hi.x - lo : block.hi.z - lo;
+                const float along = lo + unit(rng) * extent, height = block.hi.y - block.lo.y;
+                const float across = (side == 0) ? block.hi.x : side == 1 ? block.hi.z : side == 2 ? block.lo.x : block.lo.z;
+                const float y = block.lo.y + unit(rng) * height;
+                const Vec3f p = alongX ? Vec3f{along, y, across} : Vec3f{across, y, along};
+                const PhotonLayer layer = photonLayerOf(block, p, n, 1);
+                ASSERT_EQ(layer, PhotonLayer(side)) << "the box's sides face away from its centre";
                 const BufferPoint bp = projectOntoBlock(block, layer, p, n);
                 ASSERT_GE(bp.x, 0.0f);
                 ASSERT_LT(bp.x, float(bp.w));
                 ASSERT_GE(bp.y, 0.0f);
                 ASSERT_LT(bp.y, float(bp.h));
-                // Back: the texel centre's angle on the facade's plane x = const, and its height; within
-                // the texel's extent on the facade (its edges' angles on the same plane).
-                auto alongFacade = [&](float texelX) {
-                    const float angle = (texelX / float(bp.w) - 0.5f) * 2.0f * float(M_PI);
-                    return block.centre.y + (x - block.centre.x) * std::tan(angle);
-                };
-                const float back = alongFacade(std::floor(bp.x) + 0.5f);
-                const float edge0 = alongFacade(std::floor(bp.x)), edge1 = alongFacade(std::floor(bp.x) + 1.0f);
-                const float height = block.hi.y - block.lo.y;
+                // Back: the texel centre along the side and up, within half a texel of the point.
+                const float back = lo + (std::floor(bp.x) + 0.5f) / float(bp.w) * extent;
                 const float backY = block.lo.y + (std::floor(bp.y) + 0.5f) / float(bp.h) * height;
-                // (Where the texel reaches past the facade's plane's horizon, its extent there is unbounded.)
-                auto facesPlane = [&](float texelX) {
-                    return std::cos((texelX / float(bp.w) - 0.5f) * 2.0f * float(M_PI)) * (x - block.centre.x) > 0.0f;
-                };
-                ++points;
-                if (facesPlane(std::floor(bp.x)) && facesPlane(std::floor(bp.x) + 1.0f)) {
-                    ++checked;
-                    EXPECT_LE(std::fabs(back - p.z), std::max(std::fabs(edge0 - back), std::fabs(edge1 - back)) + 1e-3f)
-                        << "level " << level;
-                }
-                EXPECT_LE(std::fabs(backY - p.y), 0.5f * height / float(bp.h) + 1e-3f);
+                EXPECT_LE(std::fabs(back - along), 0.5f * extent / float(bp.w) * 1.001f) << "level " << level;
+                EXPECT_LE(std::fabs(backY - y), 0.5f * height / float(bp.h) * 1.001f) << "level " << level;
+                ++checked;
                 // A ground point of the block's rectangle.
                 const Vec3f g{block.groundLo.x + unit(rng) * (block.groundHi.x - block.groundLo.x), 0.0f,
                               block.groundLo.y + unit(rng) * (block.groundHi.y - block.groundLo.y)};
@@ -143,7 +134,12 @@ TEST(PhotonBuffers, ParameterisationRoundTripWithinATexel) {
                 EXPECT_LE(std::fabs(block.groundLo.y + (std::floor(gp.y) + 0.5f) * sz - g.z), 0.5f * sz * 1.001f);
             }
         }
-    EXPECT_GT(checked, points * 9 / 10) << "facade points checked along the facade";
+    EXPECT_EQ(checked, 2000u * kPhotonLevels * uint32_t(set.blocks.size()));
+    // A party wall through a row's centre (the east row's at z = 0, facing north over its lower
+    // neighbour) takes one layer whichever side of the centre rounding puts its points.
+    const PhotonBlock& east = set.blocks[set.blockOfObject[4]];
+    ASSERT_EQ(east.centre.y, 0.0f);
+    for (float z : {-1e-4f, 0.0f, 1e-4f}) EXPECT_EQ(photonLayerOf(east, {18, 25, z}, {0, 0, -1}, 5), PhotonLayer::FacadeNorth);
 }
 
 // The splats of a photon add up to its flux: sum of texel irradiance x texel area = the photons' power.
@@ -280,8 +276,9 @@ TEST(PhotonBuffers, VisibilityFlagsAndPersistence) {
 
 // On the street canyon, the photon map and the photon buffers converge to the path tracer's image:
 // the image's mean luminance, and the mean relative error of 8 x 8 pixel blocks' luminance, against a
-// 1024 spp path-traced reference (64 passes of 50,000 photons: measured -1.7 % and +2.6 % on the
-// mean, the blocks' error mostly the photons' noise).
+// 1024 spp path-traced reference (64 passes of 50,000 photons: measured -1.7 % (map) and +2.4 %
+// (buffers) on the mean, the goal 2 % for the map and the stated 3 % for the buffers; blocks
+// 5.1 % and 6.9 %, mostly the photons' noise). The same seed gives the same images for any thread count.
 TEST(Photons, StreetCanyonConvergesToThePathTracer) {
     const Scene scene = test::streetCanyonScene();
     RenderSettings settings;
@@ -298,10 +295,10 @@ TEST(Photons, StreetCanyonConvergesToThePathTracer) {
     const LinearImage map = renderPhotons(scene, camera, settings, IntegratorKind::PhotonMap);
     const LinearImage buffers = renderPhotons(scene, camera, settings, IntegratorKind::PhotonBuffers);
     const double mean = meanLuminance(reference);
-    EXPECT_NEAR(meanLuminance(map) / mean, 1.0, 0.04) << "photon map";
-    EXPECT_NEAR(meanLuminance(buffers) / mean, 1.0, 0.04) << "photon buffers";
-    EXPECT_LT(blockRelativeError(map, reference, 8), 0.12) << "photon map";
-    EXPECT_LT(blockRelativeError(buffers, reference, 8), 0.12) << "photon buffers";
+    EXPECT_NEAR(meanLuminance(map) / mean, 1.0, 0.02) << "photon map";
+    EXPECT_NEAR(meanLuminance(buffers) / mean, 1.0, 0.03) << "photon buffers";
+    EXPECT_LT(blockRelativeError(map, reference, 8), 0.07) << "photon map";
+    EXPECT_LT(blockRelativeError(buffers, reference, 8), 0.08) << "photon buffers";
     std::printf("street canyon: mean luminance path %.5f, map %.5f, buffers %.5f; 8 x 8 block error map %.4f, buffers %.4f\n",
                 mean, meanLuminance(map), meanLuminance(buffers), blockRelativeError(map, reference, 8),
                 blockRelativeError(buffers, reference, 8));

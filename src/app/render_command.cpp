@@ -202,7 +202,8 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
     };
     if (settings.integrator != IntegratorKind::Path) {
         const PhotonTimings& p = device.photons;
-        stats["photons"] = {{"seconds", {{"flags", p.flags}, {"photons", p.photons}, {"grid", p.grid}, {"camera", p.camera}}},
+        stats["photons"] = {{"seconds", {{"flags", p.flags}, {"photons", p.photons}, {"grid", p.grid}, {"camera", p.camera},
+                                         {"lighting_pass", p.lightingPass}}},
                             {"photon_rays", p.photonRays}, {"stored", p.stored}, {"texels", p.texels},
                             {"blocks", p.blocks}, {"blocks_with_memory", p.blocksWithMemory}};
     }

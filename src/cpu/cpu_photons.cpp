@@ -48,6 +48,24 @@ std::vector<uint8_t> seenBlocksCpu(const SceneView& view, const Camera& camera, 
     return seen;
 }
 
+/// One lighting pass apart (PhotonTimings::lightingPass) on the photons of `view`: the camera chains of
+/// sample `sample` to their ends first, then, timed, the photons' indirect light at every end; seconds.
+double timeLightingPassCpu(const SceneView& view, const Camera& camera, const RenderSettings& settings, uint32_t sample) {
+    const size_t pixels = size_t(settings.width) * settings.height;
+    std::vector<CameraChainEnd> ends(pixels);
+    tbb::parallel_for(uint32_t(0), settings.height, [&](uint32_t y) {
+        for (uint32_t x = 0; x < settings.width; ++x)
+            ends[size_t(y) * settings.width + x] = followCameraChain(view, camera, settings, x, y, sample).end;
+    });
+    std::vector<Vec3f> indirect(pixels);
+    const auto t = Clock::now();
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, pixels, 1024), [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t i = range.begin(); i < range.end(); ++i)
+            if (ends[i].hit.valid()) indirect[i] = ends[i].throughput * photonIndirect(view, settings.integrator, ends[i].hit, ends[i].wo);
+    });
+    return secondsSince(t);
+}
+
 } // namespace
 
 PhotonGridView buildPhotonGridCpu(const std::vector<Photon>& photons, float radius, std::vector<Photon>& sorted,
@@ -142,6 +160,7 @@ void renderPhotonsCpu(const Scene& scene, const Camera& camera, const RenderSett
     }
     counters.rays += timings.photonRays - photonRaysBefore;
     counters.seconds = secondsSince(began);
+    if (samples.count > 0) timings.lightingPass = timeLightingPassCpu(view, camera, settings, samples.first + samples.count - 1);
     timings.texels = state.texels.size() / 3;
     timings.blocks = uint32_t(state.blocks.blocks.size());
     timings.blocksWithMemory = 0;

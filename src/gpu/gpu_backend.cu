@@ -415,8 +415,9 @@ void GpuScene::renderPhotons(const Scene& host, const Camera& camera, const Rend
     counters = {};
     const uint64_t photonRaysBefore = timings.photonRays;
     const double secondsBefore = timings.flags + timings.photons + timings.grid + timings.camera;
+    PhotonsView photons;
     for (uint32_t s = samples.first; s < samples.first + samples.count; ++s) {
-        const PhotonsView photons = m.photonPasses->runPass(host, m.scene.view(), camera, settings, s, timings);
+        photons = m.photonPasses->runPass(host, m.scene.view(), camera, settings, s, timings);
         URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
         EventTimer timer;
         timer.start();
@@ -427,6 +428,8 @@ void GpuScene::renderPhotons(const Scene& host, const Camera& camera, const Rend
     }
     counters.rays += timings.photonRays - photonRaysBefore;
     counters.seconds = timings.flags + timings.photons + timings.grid + timings.camera - secondsBefore;
+    if (samples.count > 0)
+        timings.lightingPass = m.photonPasses->timeLightingPass(m.scene.view(), photons, camera, settings, samples.first + samples.count - 1);
 }
 
 GpuMemory GpuScene::memory() const {

@@ -61,16 +61,54 @@ __global__ void __launch_bounds__(kPhotonBlock) photonSplatKernel(SceneView scen
     if (rays > 0) atomicAdd(rayCount, (unsigned long long)rays);
 }
 
-/// One thread per pixel: flags the block its camera chain of sample `sample` ends on.
-template <bool CostlyLeaves>
-__global__ void __launch_bounds__(kTileX * kTileY) photonFlagKernel(SceneView scene, Camera camera, RenderSettings settings,
-                                                                    uint32_t sample, uint8_t* seen) {
+/// One thread per pixel (x, y): op(scene, settings, x, y), the leaves' cost trait fixed at compile time.
+template <bool CostlyLeaves, typename PixelOp>
+__global__ void __launch_bounds__(kTileX * kTileY) pixelKernel(SceneView scene, RenderSettings settings, PixelOp op) {
     scene.costlyLeaves = CostlyLeaves;
     scene.features = kAllFeatures;   // one kernel for any scene: its tests of the kinds fold away
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
     if (x >= settings.width || y >= settings.height) return;
-    const uint32_t block = cameraSampleBlock(scene, camera, settings, x, y, sample);
-    if (block != kNoBlock) seen[block] = 1;
+    op(scene, settings, x, y);
+}
+
+/// Launches pixelKernel over the image of `settings`.
+template <typename PixelOp>
+void launchPerPixel(const SceneView& view, const RenderSettings& settings, const PixelOp& op, const char* name) {
+    const dim3 block(kTileX, kTileY);
+    const dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
+    if (view.costlyLeaves) pixelKernel<true><<<grid, block>>>(view, settings, op);
+    else pixelKernel<false><<<grid, block>>>(view, settings, op);
+    checkPhotonLaunch(name);
+}
+
+/// The visibility flags: the block a pixel's camera chain of sample `sample` ends on is seen.
+struct FlagSeenBlock {
+    Camera camera;
+    uint32_t sample;
+    uint8_t* seen;
+    __device__ void operator()(const SceneView& scene, const RenderSettings& settings, uint32_t x, uint32_t y) const {
+        const uint32_t block = cameraSampleBlock(scene, camera, settings, x, y, sample);
+        if (block != kNoBlock) seen[block] = 1;
+    }
+};
+
+/// The lighting pass's first hits: the end of a pixel's camera chain of sample `sample`.
+struct StoreChainEnd {
+    Camera camera;
+    uint32_t sample;
+    CameraChainEnd* ends;
+    __device__ void operator()(const SceneView& scene, const RenderSettings& settings, uint32_t x, uint32_t y) const {
+        ends[size_t(y) * settings.width + x] = followCameraChain(scene, camera, settings, x, y, sample).end;
+    }
+};
+
+/// One thread per pixel: the photons' indirect light at its chain's end (the lighting pass apart).
+__global__ void __launch_bounds__(kPhotonBlock) lightingPassKernel(SceneView scene, IntegratorKind integrator,
+                                                                   const CameraChainEnd* ends, uint32_t count, Vec3f* indirect) {
+    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= count) return;
+    const CameraChainEnd& end = ends[i];
+    indirect[i] = end.hit.valid() ? end.throughput * photonIndirect(scene, integrator, end.hit, end.wo) : Vec3f{};
 }
 
 /// One thread per stored photon: its bucket in the grid.
@@ -166,11 +204,7 @@ PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& device
         view.photons.buffers = m.buffersView();
         if (m.seen.size() && newView(m.flagged, m.flaggedCamera, camera)) {
             URBIS_CUDA_CHECK(cudaMemset(m.seen.data(), 0, m.seen.bytes()));
-            const dim3 block(kTileX, kTileY);
-            const dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
-            if (view.costlyLeaves) photonFlagKernel<true><<<grid, block>>>(view, camera, settings, sample, m.seen.data());
-            else photonFlagKernel<false><<<grid, block>>>(view, camera, settings, sample, m.seen.data());
-            checkPhotonLaunch("photonFlagKernel");
+            launchPerPixel(view, settings, FlagSeenBlock{camera, sample, m.seen.data()}, "the visibility flags");
             const std::vector<uint8_t> seen = m.seen.download();
             m.texelCount = allocateSeenBlocks(m.blocks.blocks, seen, camera.position, settings, m.passes, m.texelCount);
             m.deviceBlocks.upload(m.blocks.blocks);
@@ -229,6 +263,21 @@ PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& device
     }
     timings.photonRays += m.rayCount.download()[0];
     return view.photons;
+}
+
+double GpuPhotonPasses::timeLightingPass(const SceneView& deviceView, const PhotonsView& photons, const Camera& camera,
+                                         const RenderSettings& settings, uint32_t sample) {
+    SceneView view = deviceView;
+    view.photons = photons;
+    const uint32_t pixels = settings.width * settings.height;
+    DeviceBuffer<CameraChainEnd> ends(pixels);
+    DeviceBuffer<Vec3f> indirect(pixels);
+    launchPerPixel(view, settings, StoreChainEnd{camera, sample, ends.data()}, "the lighting pass's first hits");
+    EventTimer timer;
+    timer.start();
+    lightingPassKernel<<<blocksFor(pixels), kPhotonBlock>>>(view, settings.integrator, ends.data(), pixels, indirect.data());
+    checkPhotonLaunch("lightingPassKernel");
+    return timer.stopMs() * 1e-3;
 }
 
 } // namespace urbis

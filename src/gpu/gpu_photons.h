@@ -24,6 +24,10 @@ public:
     /// returns what the camera pass of that sample must see in SceneView::photons.
     PhotonsView runPass(const Scene& scene, const SceneView& view, const Camera& camera, const RenderSettings& settings,
                         uint32_t sample, PhotonTimings& timings);
+    /// One lighting pass apart (PhotonTimings::lightingPass) on `photons`, what runPass returned for
+    /// sample `sample`: the camera chains' ends first, then, timed, the indirect light at each; seconds.
+    double timeLightingPass(const SceneView& view, const PhotonsView& photons, const Camera& camera,
+                            const RenderSettings& settings, uint32_t sample);
     /// Device bytes it holds (photons, grid, buffers).
     size_t bytes() const;
 

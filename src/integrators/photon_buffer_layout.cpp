@@ -2,7 +2,6 @@
 
 #include "base/input_error.h"
 #include "math/bounds.h"
-#include "math/constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,10 +19,8 @@ void layOutPhotonBlock(PhotonBlock& block, uint32_t level, float texel0, uint32_
     auto texels = [&](float length, uint32_t least) {
         return std::clamp(uint32_t(std::ceil(length / texel)), least, 4096u);
     };
-    // Around: the circle through the block's farthest corner.
-    const float rx = std::max(block.hi.x - block.centre.x, block.centre.x - block.lo.x);
-    const float rz = std::max(block.hi.z - block.centre.y, block.centre.y - block.lo.z);
-    block.facadeU = texels(2.0f * kPi * std::sqrt(rx * rx + rz * rz), 8);
+    block.facadeX = texels(block.hi.x - block.lo.x, 1);
+    block.facadeZ = texels(block.hi.z - block.lo.z, 1);
     block.facadeV = texels(block.hi.y - block.lo.y, 1);
     block.topU = texels(block.groundHi.x - block.groundLo.x, 1);
     block.topV = texels(block.groundHi.y - block.groundLo.y, 1);

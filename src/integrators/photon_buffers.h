@@ -1,14 +1,14 @@
 // Photon buffers (host+device; Argudo, Andujar and Patow, "Interactive rendering of urban models with
-// global illumination"): photons splatted into persistent 2D buffers per block of buildings, a
-// cylindrical projection about the block's centre for its facades and an orthographic one for its
-// roofs and its ground, looked up in O(1) at the camera pass's first diffuse hit. A texel holds
-// irradiance (the photons' flux over the surface area it covers), splatted bilinearly so that the
-// buffer is anti-aliased, in 64-bit fixed point so that the sums do not depend on the splats' order.
-// docs/photons.md § Photon buffers.
+// global illumination"): photons splatted into persistent 2D buffers per block of buildings, its
+// facades by the way they face and the half of the block they stand in, projected onto the sides of its
+// box (the paper's cylindrical projection, whose Jacobian vanishes on a wall through the block's axis,
+// made a box), its roofs and its ground orthographically, looked up in O(1) at the camera pass's first
+// diffuse hit. A texel holds irradiance (the photons' flux over the surface area it covers), splatted
+// bilinearly so that the buffer is anti-aliased, in 64-bit fixed point so that the sums do not depend
+// on the splats' order. docs/photons.md § Photon buffers.
 #pragma once
 
 #include "geometry/surface_hit.h"
-#include "math/constants.h"
 #include "scene/scene_view.h"
 
 namespace urbis {
@@ -31,7 +31,6 @@ struct BufferPoint {
     PhotonLayer layer = PhotonLayer::Ground;
     uint32_t w = 0, h = 0;
     float x = 0, y = 0;
-    bool wrapsX = false;     ///< the cylindrical layers wrap around in angle
     float texelArea = 0;
 };
 
@@ -59,32 +58,37 @@ URBIS_HD inline BufferPoint projectOntoBlock(const PhotonBlock& block, PhotonLay
         out.texelArea = sx * sz / fmaxf(fabsf(n.y), 0.2f);
         return out;
     }
-    // Cylindrical about the block's vertical axis: angle around, height up. A texel spans
-    // 2 pi rho / facadeU along a circle of radius rho; a facade at angle phi to the radial direction
-    // covers 1 / |cos phi| of that (clamped: a facade seen edge-on from the axis would take no texel;
-    // a texel there stretches ten texels along the facade).
-    const float dx = p.x - block.centre.x, dz = p.z - block.centre.y;
-    const float rho = fmaxf(sqrtf(dx * dx + dz * dz), 1.0f);
-    float u = atan2f(dz, dx) * (0.5f / kPi) + 0.5f;
-    u = u >= 1.0f ? 0.0f : u;
+    // Orthographic along the way the facade faces onto the side of the box: a texel covers its
+    // rectangle of the side over the cosine between the facade and the side, at least 0.61 (the
+    // facing is the larger horizontal component of a normal at most 60 degrees from horizontal; the
+    // clamp at 0.5 only guards that bound).
+    const bool alongX = facadeLayerAlongX(layer);
+    const float lo = alongX ? block.lo.x : block.lo.z, extent = fmaxf(alongX ? block.hi.x - lo : block.hi.z - lo, 1e-3f);
     const float height = fmaxf(block.hi.y - block.lo.y, 1e-3f);
-    out.w = block.facadeU;
+    out.w = alongX ? block.facadeX : block.facadeZ;
     out.h = block.facadeV;
-    out.x = u * float(block.facadeU);
-    out.y = (p.y - block.lo.y) / height * float(block.facadeV);
-    out.wrapsX = true;
-    const float radial = fabsf(n.x * dx + n.z * dz) / rho;
-    out.texelArea = 2.0f * kPi * rho * height / (float(block.facadeU) * float(block.facadeV) * fmaxf(radial, 0.1f));
+    out.x = ((alongX ? p.x : p.z) - lo) / extent * float(out.w);
+    out.y = (p.y - block.lo.y) / height * float(out.h);
+    const float facing = fabsf(alongX ? n.z : n.x);
+    out.texelArea = extent * height / (float(out.w) * float(out.h) * fmaxf(facing, 0.5f));
     return out;
 }
 
-/// The layer of a surface point of `object` with unit normal `n`: roofs and the ground orthographic
-/// (normals up), other building surfaces cylindrical, by the way they face.
-URBIS_HD inline PhotonLayer photonLayerOf(Vec3f n, uint32_t object) {
+/// Distance (metres) within which a facade at the block's centre counts as outer whichever way it
+/// faces: a party wall through the centre lands on one layer, not on either by rounding.
+inline constexpr float kPhotonCentreSlack = 0.05f;
+
+/// The layer of a surface point `p` of `object` with unit normal `n` in `block`: roofs and the ground
+/// orthographic (normals up), other building surfaces by the way they face and whether they face away
+/// from the block's centre (outer) or towards it (inner).
+URBIS_HD inline PhotonLayer photonLayerOf(const PhotonBlock& block, Vec3f p, Vec3f n, uint32_t object) {
     if (object == 0) return PhotonLayer::Ground;
     if (n.y > 0.5f) return PhotonLayer::Roof;
-    if (fabsf(n.x) >= fabsf(n.z)) return n.x >= 0.0f ? PhotonLayer::FacadeEast : PhotonLayer::FacadeWest;
-    return n.z >= 0.0f ? PhotonLayer::FacadeSouth : PhotonLayer::FacadeNorth;
+    const bool alongZ = fabsf(n.x) >= fabsf(n.z);
+    const float facing = alongZ ? n.x : n.z, offset = alongZ ? p.x - block.centre.x : p.z - block.centre.y;
+    const uint32_t side = alongZ ? (facing >= 0.0f ? 0u : 2u) : (facing >= 0.0f ? 1u : 3u);
+    const bool outer = (facing >= 0.0f ? offset : -offset) > -kPhotonCentreSlack;
+    return PhotonLayer(side + (outer ? 0u : 4u));
 }
 
 /// Where the surface point (`p`, unit normal `n`, `object`) lies in the buffers. False where no block
@@ -93,20 +97,20 @@ URBIS_HD inline bool bufferPointOf(const PhotonBuffersView& b, Vec3f p, Vec3f n,
     const uint32_t id = photonBlockOf(b, p, object);
     if (id == kNoBlock || b.blocks[id].texelOffset == kNoTexels) return false;
     const PhotonBlock& block = b.blocks[id];
-    out = projectOntoBlock(block, photonLayerOf(n, object), p, n);
+    out = projectOntoBlock(block, photonLayerOf(block, p, n, object), p, n);
     out.block = id;
     return true;
 }
 
 /// The four texels of the bilinear footprint of `bp` (layer-relative indices) and their weights,
-/// which sum to one: wrapped around in angle, clamped at the other edges.
+/// which sum to one, clamped at the layer's edges.
 URBIS_HD inline void bilinearTexels(const BufferPoint& bp, uint32_t index[4], float weight[4]) {
     const float fx = bp.x - 0.5f, fy = bp.y - 0.5f;
     const float x0 = floorf(fx), y0 = floorf(fy), wx = fx - x0, wy = fy - y0;
     const int w = int(bp.w), h = int(bp.h);
     int xs[2] = {int(x0), int(x0) + 1}, ys[2] = {int(y0), int(y0) + 1};
     for (int k = 0; k < 2; ++k) {
-        xs[k] = bp.wrapsX ? ((xs[k] % w) + w) % w : (xs[k] < 0 ? 0 : (xs[k] >= w ? w - 1 : xs[k]));
+        xs[k] = xs[k] < 0 ? 0 : (xs[k] >= w ? w - 1 : xs[k]);
         ys[k] = ys[k] < 0 ? 0 : (ys[k] >= h ? h - 1 : ys[k]);
     }
     for (int k = 0; k < 4; ++k) {
@@ -116,7 +120,7 @@ URBIS_HD inline void bilinearTexels(const BufferPoint& bp, uint32_t index[4], fl
 }
 
 /// Whether the buffers hold light for the surface of `hit`: not the rooms behind windows, which the
-/// cylindrical projection would put on the texels of the facade in front of them.
+/// facade projection would put on the texels of the facade in front of them.
 URBIS_HD inline bool bufferedSurface(const SurfaceHit& hit) { return hit.part != SurfacePart::Room; }
 
 /// A sink of tracePhoton that splats into the photon buffers: the photon's flux over the area a

@@ -71,6 +71,17 @@ URBIS_HD inline CameraChain followCameraChain(const SceneView& scene, const Came
     return chain;
 }
 
+/// Indirect light towards `wo` (unit) at a camera chain's non-specular hit from the photons: the photon
+/// map's gather (`integrator` PhotonMap), or one look-up of the block's photon buffer, irradiance times
+/// albedo / pi (PhotonBuffers). The lighting pass of Argudo et al.
+URBIS_HD inline Vec3f photonIndirect(const SceneView& scene, IntegratorKind integrator, const SurfaceHit& hit, Vec3f wo) {
+    const Material& material = scene.materials[hit.material];
+    if (integrator == IntegratorKind::PhotonMap) return gatherPhotons(scene.photons.grid, material, hit.position, hit.normal, wo);
+    if (!bufferedSurface(hit)) return {};
+    return material.albedo * (1.0f / kPi) *
+           bufferIrradiance(scene.photons.buffers, hit.position, hit.normal, hit.object, scene.photons.pass);
+}
+
 /// Radiance of sample `sampleIndex` through pixel (px, py) by a photon integrator: the chain's
 /// emission, next-event estimation at its end (at least one light sample: photons carry no direct
 /// light of light-sampled lights) and the photons' indirect light there.
@@ -81,7 +92,6 @@ URBIS_HD inline PathSample photonCameraSample(const SceneView& scene, const Came
     const CameraChainEnd& end = chain.end;
     if (!end.hit.valid()) return out;
     const SurfaceHit& hit = end.hit;
-    const Material& material = scene.materials[hit.material];
     RenderSettings direct = settings;
     direct.lightSamples = settings.lightSamples > 0 ? settings.lightSamples : 1;
     PathVertex vertex;
@@ -100,11 +110,7 @@ URBIS_HD inline PathSample photonCameraSample(const SceneView& scene, const Came
         if (!traceScene(scene, shadow, true).valid())
             out.radiance += contribution * cloudTransmittance(scene, shadow, octaves, chain.rng);
     }
-    if (settings.integrator == IntegratorKind::PhotonMap)
-        out.radiance += end.throughput * gatherPhotons(scene.photons.grid, material, hit.position, hit.normal, end.wo);
-    else if (bufferedSurface(hit))
-        out.radiance += end.throughput * material.albedo * (1.0f / kPi) *
-                        bufferIrradiance(scene.photons.buffers, hit.position, hit.normal, hit.object, scene.photons.pass);
+    out.radiance += end.throughput * photonIndirect(scene, settings.integrator, hit, end.wo);
     return out;
 }
 

@@ -31,34 +31,43 @@ struct PhotonGridView {
 inline constexpr uint32_t kNoBlock = 0xffffffffu;
 inline constexpr uint32_t kNoTexels = 0xffffffffu;
 
-/// The layers of a block's photon buffers: its facades (cylindrical) by the way they face, east
-/// (+x), south (+z), west and north, so that walls met along one ray from the block's axis (a street
-/// front and the side walls of the gaps behind it) keep apart; its roofs and its ground (orthographic).
-enum class PhotonLayer : uint32_t { FacadeEast, FacadeSouth, FacadeWest, FacadeNorth, Roof, Ground };
-inline constexpr uint32_t kPhotonFacadeLayers = 4, kPhotonLayers = 6;
+/// The layers of a block's photon buffers. Its facades by the way they face, east (+x), south (+z),
+/// west and north, and by the half of the block they stand in: outer where they face away from the
+/// block's centre (street fronts), inner where they face it (courtyards, the walls of gaps and steps),
+/// so that opposite sides of a block keep apart as in the paper's cylindrical projection; each projected
+/// orthographically along the way it faces onto the side of the block's box. Its roofs and its ground
+/// orthographic along y.
+enum class PhotonLayer : uint32_t {
+    FacadeEast, FacadeSouth, FacadeWest, FacadeNorth, InnerEast, InnerSouth, InnerWest, InnerNorth, Roof, Ground
+};
+inline constexpr uint32_t kPhotonFacadeLayers = 8, kPhotonLayers = 10;
+
+/// Whether the facade layer `layer` spans the block along x (walls facing south or north); else along z.
+URBIS_HD inline bool facadeLayerAlongX(PhotonLayer layer) { return (uint32_t(layer) & 1u) != 0; }
 
 /// A block of buildings and its photon buffers. The geometry is built once per scene
 /// (integrators/photon_blocks.h); the allocation per render (level, texels) when the block is first
 /// seen (integrators/photon_buffer_layout.h).
 struct PhotonBlock {
     Vec3f lo, hi;             ///< box of its buildings, world metres
-    Vec2f centre;             ///< (x, z) of the cylindrical projection's axis
+    Vec2f centre;             ///< (x, z) where the outer and the inner facade layers part
     Vec2f groundLo, groundHi; ///< (x, z) rectangle of the orthographic layers: the box and the ground cells it owns
     uint32_t texelOffset = kNoTexels;  ///< first texel of its buffers; kNoTexels: no memory (not seen)
-    uint32_t facadeU = 0, facadeV = 0; ///< texels around (angle) and up, per facade layer
+    uint32_t facadeX = 0, facadeZ = 0, facadeV = 0; ///< texels of the facade layers along x, along z (the box's sides) and up
     uint32_t topU = 0, topV = 0;       ///< texels along x and z, per orthographic layer
     uint32_t level = 0;                ///< 0-4: texel side = base texel x 2^level
     uint32_t firstPass = 0;            ///< the pass its buffers began to accumulate in
 
-    /// Texels of one facade layer and of one orthographic layer.
-    URBIS_HD uint32_t facadeTexels() const { return facadeU * facadeV; }
+    /// Texels of the facade layers along x and along z, and of one orthographic layer.
+    URBIS_HD uint32_t facadeTexelsX() const { return facadeX * facadeV; }
+    URBIS_HD uint32_t facadeTexelsZ() const { return facadeZ * facadeV; }
     URBIS_HD uint32_t topTexels() const { return topU * topV; }
-    /// First texel of `layer`.
+    /// First texel of `layer`: the facade layers alternate along z (east, west) and along x (south, north).
     URBIS_HD uint32_t layerOffset(PhotonLayer layer) const {
-        const uint32_t k = uint32_t(layer), f = kPhotonFacadeLayers;
-        return texelOffset + (k < f ? k * facadeTexels() : f * facadeTexels() + (k - f) * topTexels());
+        const uint32_t k = uint32_t(layer), f = kPhotonFacadeLayers, pair = facadeTexelsZ() + facadeTexelsX();
+        return texelOffset + (k < f ? (k >> 1) * pair + (k & 1) * facadeTexelsZ() : (f >> 1) * pair + (k - f) * topTexels());
     }
-    URBIS_HD uint32_t texels() const { return kPhotonFacadeLayers * facadeTexels() + 2 * topTexels(); }
+    URBIS_HD uint32_t texels() const { return (kPhotonFacadeLayers >> 1) * (facadeTexelsZ() + facadeTexelsX()) + 2 * topTexels(); }
 };
 
 /// The photon buffers: blocks, which block each building and each ground cell belongs to, and the
