@@ -53,7 +53,7 @@ TEST(MpiRender, KilledRankEndsTheJobWithoutOutput) {
     const std::string mpirun = mpirunPrefix(2, why);
     if (mpirun.empty()) GTEST_SKIP() << why;
     auto dir = scratchDir("mpi_killed_rank");
-    // URBIS_TEST_KILL_RANK (src/cluster/mpi_world.cpp) kills rank 1 by SIGKILL when its first tile arrives.
+    // URBIS_TEST_KILL_RANK (src/cluster/mpi_world.cpp) kills rank 1 by SIGKILL at rank 0's first answer.
     CommandResult r = runUrbis(kSmall + "--out killed.png --stats killed.json", dir,
                                "URBIS_TEST_KILL_RANK=1 " + mpirun + " -x URBIS_TEST_KILL_RANK");
     EXPECT_NE(r.exitCode, 0);

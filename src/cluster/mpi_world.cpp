@@ -29,7 +29,8 @@ struct TileHeader {
 };
 
 /// The test hook of tests/mpi_render_test.cpp: URBIS_TEST_KILL_RANK=R kills rank R (SIGKILL, as a
-/// crashed or preempted node would end) when its first tile arrives, that is mid-frame.
+/// crashed or preempted node would end) at rank 0's first answer: mid-frame, or, where rank 0 has
+/// rendered every tile before R asked, before the closing barrier, which rank 0 then never passes.
 void dieIfTestAsks(int rank) {
     const char* victim = std::getenv("URBIS_TEST_KILL_RANK");
     if (victim && std::atoi(victim) == rank) std::raise(SIGKILL);
@@ -104,8 +105,8 @@ void workOnTiles(const MpiWorld& world, const std::vector<PixelRect>& tiles, Fil
     for (;;) {
         int32_t tile = -1;
         check(MPI_Recv(&tile, 1, MPI_INT32_T, 0, kAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
-        if (tile < 0) return;
         dieIfTestAsks(world.rank());
+        if (tile < 0) return;
         const TileHeader header{tile, renderTile(tiles.at(size_t(tile)))};
         const std::vector<uint8_t> pixels = packFilmRect(film, tiles[size_t(tile)]);
         message.resize(sizeof header + pixels.size());
@@ -137,9 +138,13 @@ void MpiWorld::abort(int exitCode) const {
 
 TileShare renderTilesAcrossRanks(const MpiWorld& world, const std::vector<PixelRect>& tiles, Film& film,
                                  const std::function<uint64_t(const PixelRect&)>& renderTile) {
-    if (world.isRoot()) return serveTiles(world, tiles, film, renderTile);
-    workOnTiles(world, tiles, film, renderTile);
-    return {};
+    TileShare share;
+    if (world.isRoot()) share = serveTiles(world, tiles, film, renderTile);
+    else workOnTiles(world, tiles, film, renderTile);
+    // Rank 0 writes only once every rank is known to be alive at the end: a rank that died anywhere
+    // before leaves rank 0 here until mpirun ends the job.
+    check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
+    return share;
 }
 
 } // namespace urbis
