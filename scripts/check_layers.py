@@ -51,6 +51,7 @@ LAYERS = {
     "cpu": 14,          # the CPU backend (TBB)
     "gpu": 14,          # the CUDA backend; shares nothing with cpu/ but what lies below both
     "viewer": 14,       # the viewer's camera, input handling, scene edits and scripts, apart from any window
+    "animation": 14,    # camera paths and time-of-day keyframes: the scene description of any instant
     "app": 15,          # the urbis command
 }
 

@@ -7,20 +7,19 @@
 #include "app/output_paths.h"
 #include "app/planet_scene.h"
 #include "app/render_device.h"
+#include "app/render_frames.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
 #include "citygen/city_terrain.h"
 #include "cpu/cpu_renderer.h"
-#include "description/celestial_parts.h"
 #include "description/scene_checks.h"
 #include "description/scene_json.h"
+#include "description/scene_lighting.h"
 #include "description/scene_parts.h"
 #include "io/atomic_file.h"
 #include "layout/city_layout.h"
 #include "base/input_error.h"
 #include "film/film_output.h"
-#include "lights/light_build.h"
-#include "media/atmosphere_build.h"
 #include "media/cloud_build.h"
 #include "osm/osm_import.h"
 #include "scene/scene.h"
@@ -44,6 +43,11 @@ void addRenderCommand(CLI::App& app, RenderCommandLine& line) {
     cmd->add_option("--device", o.device, "auto (the GPU if usable, else the CPU), cpu or cuda")
         ->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
     addRunOptions(*cmd, o);
+    FrameOptions& f = line.frames;
+    cmd->add_option("--frames", f.frames,
+                    "A:B, A or A: frames of the scene's animation to render (from 0; --out then holds %04d: frames/f%04d.png)");
+    cmd->add_flag("--overwrite", f.overwrite, "With --frames: render the frames whose files exist too (default: keep them)");
+    cmd->add_option("--video", f.video, "With --frames: encode them with ffmpeg into this .mp4 or .gif");
 }
 
 void addRunOptions(CLI::App& cmd, RunOptions& o) {
@@ -127,7 +131,6 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     meshOptions.trees = d.trees;
     CityMesh mesh;
     TerrainField terrain;
-    CelestialLights celestial;
     {
         auto t0 = Clock::now();
         CityModel city = loadCity(d.source);
@@ -142,20 +145,17 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
 
         p.camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces);
         checkCamera(strict, p.camera, city, mesh.cityBounds);
-        celestial = celestialLightsOf(d, city.origin);
         p.origin = city.origin;
+        p.windowUses.reserve(city.buildings.size());
+        for (const Building& b : city.buildings) p.windowUses.push_back(windowUseOf(b.type));
         p.summary = summarise(city, mesh);
     }  // the city is released here, before the scene's copy of the mesh is made
 
     auto t0 = Clock::now();
     const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
     p.scene = buildCityScene(mesh, *wallTileSizeOf(d.geometry.wallTiles), centre, terrain);
-    p.scene.sun = celestial.sun;
-    p.scene.night = celestial.night;
-    p.scene.sky = skyOf(d.sky);
-    buildAtmosphere(p.scene);
     buildClouds(p.scene, cloudLayerOf(d.clouds));
-    buildLights(p.scene);
+    lightScene(p.scene, d, p.origin);
     p.secondsBvh = secondsSince(t0);
     p.framingPieces = std::move(mesh.framingPieces);
     return p;  // and the mesh here: the scene holds every triangle in its own order
@@ -253,9 +253,18 @@ void runRender(const RenderOptions& o) {
     requireMemory(hostFilmBytes(film.width, film.height, filmOutputNeedsAovs(film.output, layers), film.denoise), limit,
                   "the " + std::to_string(film.width) + "x" + std::to_string(film.height) + " image");
 
+    const bool animated = !o.frames.frames.empty();
+    if (animated) checkFrameOptions(o);
+    else if (!o.frames.video.empty() || o.frames.overwrite)
+        throw InputError(std::string(o.frames.overwrite ? "--overwrite" : "--video") + ": needs --frames", FailureKind::Usage);
+
     PreparedScene prepared = prepareScene(o.scene, run.strict, limit);
     // Written once the input has proved good, before the render's time is spent.
     if (!o.saveSceneFile.empty()) writeSceneFile(o.scene, o.saveSceneFile);
+    if (animated) {
+        renderFrames(o, prepared);
+        return;
+    }
     RenderSettings settings = renderSettingsOf(o.scene.integrator, film);
     applyPhotonSettings(o.scene.photons, settings);
     RenderCounters counters;
