@@ -36,7 +36,12 @@ std::vector<CameraKeyframe> flyAround(const std::string& ease = "linear") {
             at(7.0, {290, 80, -20}, {0, 10, 5}, 50, ease)};
 }
 
-TimeKeyframe date(double time, std::string text) { return {time, std::move(text)}; }
+TimeKeyframe date(double time, std::string text) {
+    TimeKeyframe k;
+    k.time = time;
+    k.date = std::move(text);
+    return k;
+}
 
 } // namespace
 
@@ -121,7 +126,7 @@ TEST(CameraPath, EaseInOutComesToRestAtTheKeyframes) {
     const float easedStep = distance(*eased.at(t).position, *eased.at(t + h).position);
     EXPECT_GT(linearStep, 0.05f);
     EXPECT_LT(easedStep, linearStep * 0.05f) << "ease_in_out leaves the keyframe at rest";
-    EXPECT_EQ(eased(0.5f, 3), 0.5f);
+    EXPECT_EQ(urbis::eased(0.5f, 3), 0.5f);
 }
 
 TEST(CameraPath, KeyframesWithoutALookTakeTheScenesTarget) {

@@ -1,5 +1,5 @@
-// app/frame_range.h: --frames ranges, frame file names and the frames a resumed sequence still needs.
-#include "app/frame_range.h"
+// animation/frame_range.h: --frames ranges, frame file names and the frames a resumed sequence still needs.
+#include "animation/frame_range.h"
 
 #include "cli_support.h"
 

@@ -14,8 +14,11 @@ CivilTime civilTimeOf(const TimeKeyframe& k) {
     return parseIsoTime(k.date, error).value_or(CivilTime{});   // checked when the file was read
 }
 
-/// Seconds from `a` to `b` (UTC instants).
-double secondsBetween(const CivilTime& a, const CivilTime& b) { return (julianDayUtc(b) - julianDayUtc(a)) * 86400.0; }
+/// Seconds from `a` to `b` (UTC instants), to the millisecond: a Julian day of about 2.46e6 carries
+/// some 20 microseconds of rounding, which would otherwise make 30 minutes 29:59.99998.
+double secondsBetween(const CivilTime& a, const CivilTime& b) {
+    return std::round((julianDayUtc(b) - julianDayUtc(a)) * 86400.0 * 1000.0) / 1000.0;
+}
 
 /// The keyframes around `seconds` and how far between them it lies (0 at `from`, 1 at `to`); before
 /// the first keyframe or after the last, that keyframe twice.

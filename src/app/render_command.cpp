@@ -240,6 +240,10 @@ void runRender(const RenderOptions& o) {
     const FilmDescription& film = o.scene.film;
     size_t threads = run.threads ? run.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
+    const bool animated = !o.frames.frames.empty();
+    if (animated) checkFrameOptions(o);   // and makes the frames' folder, which the check below needs
+    else if (!o.frames.video.empty() || o.frames.overwrite)
+        throw InputError(std::string(o.frames.overwrite ? "--overwrite" : "--video") + ": needs --frames", FailureKind::Usage);
     checkOutputPath("--out", film.output, {".png", ".exr"});
     checkOutputPath("--stats", run.statsFile, {".json"});
     checkOutputPath("--save-scene", o.saveSceneFile, {".json"});
@@ -252,11 +256,6 @@ void runRender(const RenderOptions& o) {
     const bool aovs = film.denoise || filmOutputNeedsAovs(film.output, layers);
     requireMemory(hostFilmBytes(film.width, film.height, filmOutputNeedsAovs(film.output, layers), film.denoise), limit,
                   "the " + std::to_string(film.width) + "x" + std::to_string(film.height) + " image");
-
-    const bool animated = !o.frames.frames.empty();
-    if (animated) checkFrameOptions(o);
-    else if (!o.frames.video.empty() || o.frames.overwrite)
-        throw InputError(std::string(o.frames.overwrite ? "--overwrite" : "--video") + ": needs --frames", FailureKind::Usage);
 
     PreparedScene prepared = prepareScene(o.scene, run.strict, limit);
     // Written once the input has proved good, before the render's time is spent.

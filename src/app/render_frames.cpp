@@ -1,7 +1,7 @@
 #include "app/render_frames.h"
 
 #include "animation/animation_timeline.h"
-#include "app/frame_range.h"
+#include "animation/frame_range.h"
 #include "app/render_device.h"
 #include "app/video_encoding.h"
 #include "base/input_error.h"

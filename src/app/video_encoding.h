@@ -2,7 +2,7 @@
 // clear message where it is absent), written to a temporary and renamed.
 #pragma once
 
-#include "app/frame_range.h"
+#include "animation/frame_range.h"
 
 #include <string>
 

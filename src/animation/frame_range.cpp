@@ -1,4 +1,4 @@
-#include "app/frame_range.h"
+#include "animation/frame_range.h"
 
 #include <charconv>
 #include <filesystem>
