@@ -43,3 +43,9 @@ fi
 STREET=(--camera 8,1.7,45,-4,0.5,-20 --fov 70 --width 960 --height 540 --time 2024-06-21T13:00+02:00)
 "$URBIS" render "${STREET[@]}" --integrator photon-buffers --max-depth 1 --spp 64 --out "$OUT/photons_street_direct.png"
 "$URBIS" render "${STREET[@]}" --integrator photon-buffers --spp 64 --out "$OUT/photons_street_buffers.png"
+# The animation: frames of the scene file's keyframes, then a GIF with one palette (ffmpeg, optional).
+FRAMES=$(mktemp -d)
+"$URBIS" render --scene docs/examples/dusk_flyover.json --frames 0: --out "$FRAMES/f%03d.png"
+ffmpeg -nostdin -loglevel error -y -framerate 9 -i "$FRAMES/f%03d.png" \
+    -vf "split[a][b];[a]palettegen[p];[b][p]paletteuse" "$OUT/dusk_flyover.gif"
+rm -r "$FRAMES"

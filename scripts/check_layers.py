@@ -53,6 +53,7 @@ LAYERS = {
     "cluster": 14,      # MPI: the job's ranks, the tile queue of one frame, frames spread over ranks
     "viewer": 14,       # the viewer's camera, input handling, scene edits and scripts, apart from any window
     "export": 14,       # the triangle twin as glTF and OBJ files (tinygltf), whole or in tiles
+    "animation": 14,    # camera paths and time-of-day keyframes: the scene description of any instant
     "app": 15,          # the urbis command
 }
 

@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
                  "  urbis render --osm city.osm.pbf --camera-geo -122.397,37.789,300,20,-25\n"
                  "  urbis render --device cuda --spp 256 --out gpu.png\n"
                  "  urbis render --osm city.osm.pbf --save-scene city.json   # and later: urbis render --scene city.json\n"
+                 "  urbis render --scene fly.json --frames 0:119 --out frames/f%04d.png --video fly.mp4   # its animation\n"
                  "  urbis bench --device cuda --buildings 100000 --json bench.json\n"
                  "  urbis inspect city.osm.pbf --json --ids\n"
                  "  urbis render --time 2024-06-21T21:30+02:00 --exposure 8   # the sun, moon and stars of that hour\n"

@@ -9,19 +9,18 @@
 #include "app/render_device.h"
 #include "app/render_ranks.h"
 #include "app/scene_city.h"
+#include "app/render_frames.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
 #include "citygen/city_terrain.h"
 #include "cpu/cpu_renderer.h"
-#include "description/celestial_parts.h"
 #include "description/scene_checks.h"
 #include "description/scene_json.h"
+#include "description/scene_lighting.h"
 #include "description/scene_parts.h"
 #include "io/atomic_file.h"
 #include "base/input_error.h"
 #include "film/film_output.h"
-#include "lights/light_build.h"
-#include "media/atmosphere_build.h"
 #include "media/cloud_build.h"
 #include "scene/scene.h"
 
@@ -44,6 +43,11 @@ void addRenderCommand(CLI::App& app, RenderCommandLine& line) {
     cmd->add_option("--device", o.device, "auto (the GPU if usable, else the CPU), cpu or cuda")
         ->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
     addRunOptions(*cmd, o);
+    FrameOptions& f = line.frames;
+    cmd->add_option("--frames", f.frames,
+                    "A:B, A or A: frames of the scene's animation to render (from 0; --out then holds %04d: frames/f%04d.png)");
+    cmd->add_flag("--overwrite", f.overwrite, "With --frames: render the frames whose files exist too (default: keep them)");
+    cmd->add_option("--video", f.video, "With --frames: encode them with ffmpeg into this .mp4 or .gif");
 }
 
 void addRunOptions(CLI::App& cmd, RunOptions& o) {
@@ -104,7 +108,6 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     p.geometry = meshOptions.geometry;
     CityMesh mesh;
     TerrainField terrain;
-    CelestialLights celestial;
     {
         auto t0 = Clock::now();
         CityModel city = loadSceneCity(d);
@@ -117,20 +120,17 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
 
         p.camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces);
         checkCamera(strict, p.camera, city, mesh.cityBounds);
-        celestial = celestialLightsOf(d, city.origin);
         p.origin = city.origin;
+        p.windowUses.reserve(city.buildings.size());
+        for (const Building& b : city.buildings) p.windowUses.push_back(windowUseOf(b.type));
         p.summary = summarise(city, mesh);
     }  // the city is released here, before the scene's copy of the mesh is made
 
     auto t0 = Clock::now();
     const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
     p.scene = buildCityScene(mesh, *wallTileSizeOf(d.geometry.wallTiles), centre, terrain);
-    p.scene.sun = celestial.sun;
-    p.scene.night = celestial.night;
-    p.scene.sky = skyOf(d.sky);
-    buildAtmosphere(p.scene);
     buildClouds(p.scene, cloudLayerOf(d.clouds));
-    buildLights(p.scene);
+    lightScene(p.scene, d, p.origin);
     p.secondsBvh = secondsSince(t0);
     p.framingPieces = std::move(mesh.framingPieces);
     return p;  // and the mesh here: the scene holds every triangle in its own order
@@ -218,6 +218,10 @@ void runRender(const RenderOptions& o, const MpiWorld* world) {
     const FilmDescription& film = o.scene.film;
     size_t threads = run.threads ? run.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
+    const bool animated = !o.frames.frames.empty();
+    if (animated) checkFrameOptions(o);   // and makes the frames' folder, which the check below needs
+    else if (!o.frames.video.empty() || o.frames.overwrite)
+        throw InputError(std::string(o.frames.overwrite ? "--overwrite" : "--video") + ": needs --frames", FailureKind::Usage);
     checkOutputPath("--out", film.output, {".png", ".exr"});
     checkOutputPath("--stats", run.statsFile, {".json"});
     checkOutputPath("--save-scene", o.saveSceneFile, {".json"});
@@ -235,6 +239,10 @@ void runRender(const RenderOptions& o, const MpiWorld* world) {
     // Written once the input has proved good, before the render's time is spent.
     const bool writes = !world || world->isRoot();
     if (writes && !o.saveSceneFile.empty()) writeSceneFile(o.scene, o.saveSceneFile);
+    if (animated) {
+        renderFrames(o, prepared, world);
+        return;
+    }
     RenderSettings settings = renderSettingsOf(o.scene.integrator, film);
     applyPhotonSettings(o.scene.photons, settings);
     RenderCounters counters;

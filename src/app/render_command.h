@@ -2,6 +2,7 @@
 #pragma once
 
 #include "app/scene_options.h"
+#include "citygen/window_schedule.h"
 #include "cluster/mpi_world.h"
 #include "scene/geometry_modes.h"
 #include "description/scene_description.h"
@@ -26,18 +27,27 @@ struct RunOptions {
     bool verbose = false;             ///< say which device renders and why
 };
 
+/// Which frames of the scene's animation to render (docs/animation.md); none: the still.
+struct FrameOptions {
+    std::string frames;               ///< --frames A:B, A or A:; empty: the still
+    bool overwrite = false;           ///< render the frames whose files exist too
+    std::string video;                ///< --video: a .mp4 or .gif ffmpeg encodes from the frames; empty: none
+};
+
 /// A render: the scene description and how to run it.
 struct RenderOptions {
     SceneDescription scene;
     RunOptions run;
     std::string saveSceneFile;        ///< --save-scene; empty: none
+    FrameOptions frames;
 };
 
 /// The command line of `urbis render`, resolved into RenderOptions once parsed.
 struct RenderCommandLine {
     SceneCommandLine scene;
     RunOptions run;
-    RenderOptions resolve() const { return {scene.resolve(), run, scene.saveScenePath()}; }
+    FrameOptions frames;
+    RenderOptions resolve() const { return {scene.resolve(), run, scene.saveScenePath(), frames}; }
 };
 
 /// What the stats say about the import and the meshing, kept once the city and its mesh are
@@ -59,6 +69,7 @@ struct PreparedScene {
     GeometryModes geometry;
     double secondsImport = 0, secondsCitygen = 0, secondsBvh = 0;
     GeoOrigin origin;                     ///< the city's (valid for OSM): where cameraOf places geographic cameras
+    std::vector<WindowUse> windowUses;    ///< each building's, by index: relightWindows for another hour
     std::vector<Bounds3f> framingPieces;  ///< what cameraOf frames when the description names no camera
 };
 

@@ -98,6 +98,9 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
     range(bind(cmd, "--fov", v.camera.fov, "Vertical field of view, degrees",
                [](SceneDescription& d, float fov) { d.camera.fov = fov; }),
           1.0, 170.0);
+    range(bind(cmd, "--fps", v.animation.fps, "Frames per second of the scene's animation (docs/animation.md)",
+               [](SceneDescription& d, float fps) { d.animation.fps = fps; }),
+          0.01, 1000.0);
 
     // date, time and place; registered before --sun, whose angles override the time's sun
     bind(cmd, "--time", text_.time,

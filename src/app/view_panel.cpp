@@ -115,6 +115,11 @@ public:
         ImGui::TreePop();
     }
 
+    /// Keyframes are edited in the scene file (docs/animation.md); the panel says how many there are.
+    void animation(const char* key, const AnimationDescription& value) {
+        ImGui::TextDisabled("%s: %zu camera and %zu time keyframes", key, value.camera.size(), value.time.size());
+    }
+
 private:
     bool discrete(bool edited) {
         edit.changed |= edited;

@@ -1,6 +1,8 @@
 #include "astro/civil_time.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 namespace urbis {
@@ -113,6 +115,47 @@ double julianDayUtc(const CivilTime& t) {
     const int a = y / 100, b = 2 - a + a / 4;
     const double dayFraction = (t.hour * 3600.0 + t.minute * 60.0 + t.second - t.offsetMinutes * 60.0) / 86400.0;
     return std::floor(365.25 * (y + 4716)) + std::floor(30.6001 * (m + 1)) + t.day + b - 1524.5 + dayFraction;
+}
+
+namespace {
+
+/// Days from 1970-01-01 to a Gregorian date (H. Hinnant, "chrono-Compatible Low-Level Date
+/// Algorithms", days_from_civil), and the date of such a day count (civil_from_days).
+int64_t daysFromCivil(int64_t y, int m, int d) {
+    y -= m <= 2;
+    const int64_t era = (y >= 0 ? y : y - 399) / 400;
+    const int64_t yoe = y - era * 400;
+    const int64_t doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
+    const int64_t doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    return era * 146097 + doe - 719468;
+}
+
+void civilFromDays(int64_t z, int& year, int& month, int& day) {
+    z += 719468;
+    const int64_t era = (z >= 0 ? z : z - 146096) / 146097;
+    const int64_t doe = z - era * 146097;
+    const int64_t yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    const int64_t doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    const int64_t mp = (5 * doy + 2) / 153;
+    day = int(doy - (153 * mp + 2) / 5 + 1);
+    month = int(mp < 10 ? mp + 3 : mp - 9);
+    year = int(yoe + era * 400 + (month <= 2));
+}
+
+} // namespace
+
+CivilTime civilTimeAfter(const CivilTime& start, double seconds) {
+    const double clock = double(daysFromCivil(start.year, start.month, start.day)) * 86400.0 + start.hour * 3600.0 +
+                         start.minute * 60.0 + start.second + seconds;
+    const double days = std::floor(clock / 86400.0);
+    double rest = clock - days * 86400.0;
+    CivilTime t = start;
+    civilFromDays(int64_t(days), t.year, t.month, t.day);
+    t.hour = std::min(23, int(rest / 3600.0));
+    rest -= t.hour * 3600.0;
+    t.minute = std::min(59, int(rest / 60.0));
+    t.second = std::clamp(rest - t.minute * 60.0, 0.0, std::nextafter(60.0, 0.0));
+    return t;
 }
 
 double localClockHour(const CivilTime& t) { return t.hour + t.minute / 60.0 + t.second / 3600.0; }

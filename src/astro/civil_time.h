@@ -34,6 +34,10 @@ double julianDayUtc(const CivilTime& time);
 /// scene's time-of-day effects (lit windows) read.
 double localClockHour(const CivilTime& time);
 
+/// The instant `seconds` (any sign) after `start`, on start's clock (its UTC offset): what animation
+/// keyframes of the time of day interpolate.
+CivilTime civilTimeAfter(const CivilTime& start, double seconds);
+
 /// Days in a month of the Gregorian calendar.
 int daysInMonth(int year, int month);
 

@@ -131,6 +131,8 @@ MpiWorld::MpiWorld() {
 
 MpiWorld::~MpiWorld() { MPI_Finalize(); }
 
+void MpiWorld::barrier() const { MPI_Barrier(MPI_COMM_WORLD); }
+
 void MpiWorld::abort(int exitCode) const {
     MPI_Abort(MPI_COMM_WORLD, exitCode);
     std::_Exit(exitCode);  // MPI_Abort does not return; this says so to the compiler

@@ -33,6 +33,8 @@ public:
     /// Ends every rank of the job with `exitCode` (MPI_Abort): for a failure on one rank, which
     /// would otherwise leave the others waiting for it.
     [[noreturn]] void abort(int exitCode) const;
+    /// Waits until every rank has come here (MPI_Barrier).
+    void barrier() const;
 
 private:
     int rank_ = 0, ranks_ = 1, localRank_ = 0;

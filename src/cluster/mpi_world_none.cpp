@@ -14,6 +14,7 @@ MpiWorld::MpiWorld() {
 MpiWorld::~MpiWorld() = default;
 
 void MpiWorld::abort(int exitCode) const { std::exit(exitCode); }
+void MpiWorld::barrier() const {}
 
 TileShare renderTilesAcrossRanks(const MpiWorld&, const std::vector<PixelRect>&, Film&,
                                  const std::function<uint64_t(const PixelRect&)>&) {

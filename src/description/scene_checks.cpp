@@ -48,6 +48,15 @@ std::optional<SceneProblem> firstSceneProblem(const SceneDescription& d) {
     if (!wallTileSizeOf(d.geometry.wallTiles))
         return SceneProblem{"geometry.wall_tiles", "--wall-tiles",
                             "need 'whole' or SLOTSxFLOORS (e.g. 4x4), got '" + d.geometry.wallTiles + "'"};
+    if (d.planet && !d.animation.empty())
+        return SceneProblem{"animation", "--planet", "animates the city only (planet.camera has no keyframes)"};
+    for (size_t i = 0; i < d.animation.camera.size(); ++i) {
+        const CameraKeyframe& k = d.animation.camera[i];
+        const std::string key = "animation.camera[" + std::to_string(i) + "]";
+        if (k.geo && s.osm.empty()) return SceneProblem{key + ".geo", "--osm", "needs a city imported from source.osm (--osm)"};
+        if (!k.target && !k.heading && !c.target)
+            return SceneProblem{key, "--camera", "needs a target, or heading and pitch (camera.target is unset)"};
+    }
     if (d.planet && !(d.planet->amplitude < 0.2 * d.planet->radiusKm * 1e3))
         return SceneProblem{"planet.amplitude", "--planet", "must be under a fifth of the radius"};
     if (d.planet && !(std::fabs(d.planet->seaLevel) <= d.planet->amplitude + 1.0f))

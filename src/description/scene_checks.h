@@ -21,7 +21,8 @@ struct SceneProblem {
 /// file; a height range with min above max; a camera position without a target (or the reverse),
 /// at its target, or given with a geographic placement; a geographic camera without an OSM file;
 /// wall tiles that are neither "whole" nor SLOTSxFLOORS; a time that is no ISO 8601 time with an
-/// offset (astro/civil_time.h); a location off the globe.
+/// offset (astro/civil_time.h); a location off the globe; an animation of a planet, a geo camera
+/// keyframe without an OSM file, a camera keyframe with no look where camera.target is unset.
 std::optional<SceneProblem> firstSceneProblem(const SceneDescription& d);
 
 /// "whole" -> whole walls ({0, 0}); "SLOTSxFLOORS" -> tiles of at most that many cells (each 1 to

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "citygen/city_mesher.h"
+#include "description/animation_description.h"
 #include "description/planet_description.h"
 #include "scene/geometry_modes.h"
 #include "film/film_layers.h"
@@ -178,6 +179,7 @@ struct SceneDescription {
     PhotonsDescription photons;
     std::optional<PlanetDescription> planet;  ///< a whole planet instead of the city (docs/planets.md)
     CloudsDescription clouds;
+    AnimationDescription animation;   ///< camera and time-of-day keyframes (docs/animation.md)
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.

@@ -27,6 +27,7 @@ inline constexpr std::pair<const char*, Representation> kRepresentationNames[] =
 ///   v.choiceList(key, strings, names)           an array of distinct `names`
 ///   v.enumeration(key, value, pairs)            one of the names of `pairs`
 ///   v.colourMap(key, map)                       an object of building type -> colour
+///   v.animation(key, animation)                 the keyframes (description/animation_json.h)
 template <typename Description, typename Visitor>
 void visitSceneFields(Description& d, Visitor& v) {
     v.object("source", [&] {
@@ -187,6 +188,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.number("octave_extinction", c.octaveExtinction, 0.0f, 1.0f);
         v.number("octave_anisotropy", c.octaveAnisotropy, 0.0f, 1.0f);
     });
+    v.animation("animation", d.animation);
 }
 
 } // namespace urbis

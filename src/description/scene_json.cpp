@@ -1,5 +1,6 @@
 #include "description/scene_json.h"
 
+#include "description/animation_json.h"
 #include "description/building_type_names.h"
 #include "description/scene_checks.h"
 #include "description/scene_fields.h"
@@ -32,14 +33,6 @@ std::string numberText(T value) {
     else result = std::to_chars(text, text + sizeof text, value);
     auto [end, ec] = result;
     return ec == std::errc() ? std::string(text, end) : std::to_string(value);
-}
-
-/// A float as the double of its shortest decimal text, so that the file says 0.27 and not
-/// 0.27000001072883606, and reads back as the same float.
-json floatJson(float value) {
-    const std::string text = numberText(value);
-    const double shortest = std::strtod(text.c_str(), nullptr);
-    return float(shortest) == value ? shortest : double(value);
 }
 
 /// Reads fields from a JSON object tree, following visitSceneFields; every problem is an
@@ -182,6 +175,10 @@ public:
         }
     }
 
+    void animation(const char* key, AnimationDescription& value) {
+        if (const json* node = child(key)) value = animationFromJson(*node, file_, pathOf(key));
+    }
+
 private:
     struct Frame {
         const json* node;
@@ -303,6 +300,8 @@ public:
         for (const auto& [type, colour] : value) out[type] = vec3Json(colour);
     }
 
+    void animation(const char* key, const AnimationDescription& value) { (*current_)[key] = animationToJson(value); }
+
 private:
     template <typename T>
     static json valueJson(T value) {
@@ -360,6 +359,12 @@ std::string withFlatArrays(const std::string& text) {
 }
 
 } // namespace
+
+json floatJson(float value) {
+    const std::string text = numberText(value);
+    const double shortest = std::strtod(text.c_str(), nullptr);
+    return float(shortest) == value ? shortest : double(value);
+}
 
 std::string sceneFileText(const SceneDescription& description) {
     return withFlatArrays(sceneToJson(description).dump(2)) + "\n";

@@ -20,6 +20,10 @@ SceneDescription sceneFromJson(const nlohmann::ordered_json& json, const std::st
 /// optional fields it leaves unset.
 nlohmann::ordered_json sceneToJson(const SceneDescription& description);
 
+/// A float as the double of its shortest decimal text, so that a file says 0.27 and not
+/// 0.27000001072883606, and reads back as the same float.
+nlohmann::ordered_json floatJson(float value);
+
 /// sceneToJson as the text of a scene file: indented, each array of numbers on one line.
 std::string sceneFileText(const SceneDescription& description);
 

@@ -1,0 +1,125 @@
+#include "app/render_frames.h"
+
+#include "cluster/frame_spread.h"
+
+#include "animation/animation_timeline.h"
+#include "animation/frame_range.h"
+#include "app/render_device.h"
+#include "app/video_encoding.h"
+#include "base/input_error.h"
+#include "description/scene_lighting.h"
+#include "description/scene_parts.h"
+#include "film/film_output.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+
+namespace urbis {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+FrameRange frameRangeOf(const RenderOptions& o) {
+    std::string error;
+    const std::optional<FrameRange> range = parseFrameRange(o.frames.frames, frameCountOf(o.scene.animation), error);
+    if (!range) throw InputError("--frames: " + error, FailureKind::Usage);
+    return *range;
+}
+
+/// "2 min 5 s", "42 s": a duration as the progress line says it.
+std::string durationText(double seconds) {
+    const long s = std::lround(seconds);
+    if (s < 60) return std::to_string(s) + " s";
+    if (s < 3600) return std::to_string(s / 60) + " min " + std::to_string(s % 60) + " s";
+    return std::to_string(s / 3600) + " h " + std::to_string(s % 3600 / 60) + " min";
+}
+
+} // namespace
+
+void checkFrameOptions(const RenderOptions& o) {
+    const std::string& pattern = o.scene.film.output;
+    if (o.scene.animation.empty())
+        throw InputError("--frames: the scene has no animation (animation.camera or animation.time keyframes, docs/animation.md)",
+                         FailureKind::Usage);
+    std::string error;
+    if (!isFramePattern(pattern, error)) throw InputError("--out (film.output) with --frames: " + error, FailureKind::Usage);
+    frameRangeOf(o);
+    if (!o.run.statsFile.empty()) throw InputError("--stats: counts one still; not with --frames", FailureKind::Usage);
+    if (!o.frames.video.empty()) checkVideoOutput(o.frames.video, pattern);
+    const std::filesystem::path folder = std::filesystem::path(pattern).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::create_directories(folder, ec) && ec)
+        throw InputError(folder.string() + ": cannot make the frames' folder (" + ec.message() + ")", FailureKind::Output);
+}
+
+namespace {
+
+/// This rank's share of `frames`: all of them in one process. Every rank lists the frames still to
+/// render before any writes one (the barrier), so that all ranks share out the same list.
+std::vector<uint32_t> framesOfThisRank(const std::vector<uint32_t>& frames, const MpiWorld* world) {
+    if (!world || world->ranks() < 2) return frames;
+    world->barrier();
+    const std::vector<int64_t> share = framesOfRank({frames.begin(), frames.end()}, world->rank(), world->ranks());
+    return {share.begin(), share.end()};
+}
+
+} // namespace
+
+void renderFrames(const RenderOptions& o, PreparedScene& prepared, const MpiWorld* world) {
+    const auto start = Clock::now();
+    const FilmDescription& film = o.scene.film;
+    const std::string& pattern = film.output;
+    const FrameRange range = frameRangeOf(o);
+    const std::vector<uint32_t> frames = framesOfThisRank(framesToRender(range, pattern, o.frames.overwrite), world);
+    const AnimationTimeline timeline(o.scene, prepared.origin);
+    const bool timeMoves = !o.scene.animation.time.empty();
+    const uint32_t layers = filmLayerMaskOf(film.layers);
+    const bool aovs = film.denoise || filmOutputNeedsAovs(pattern, layers);
+    RenderSettings settings = renderSettingsOf(o.scene.integrator, film);
+    applyPhotonSettings(o.scene.photons, settings);
+    std::printf("urbis: frames %u..%u: %zu to render, %zu kept\n", range.first, range.last, frames.size(),
+                size_t(range.count()) - frames.size());
+    std::fflush(stdout);
+
+    double secondsRendering = 0;
+    std::string device = "cpu";
+    for (size_t i = 0; i < frames.size(); ++i) {
+        const auto t0 = Clock::now();
+        const uint32_t n = frames[i];
+        const SceneDescription d = timeline.frame(n);
+        if (timeMoves) {   // only the lights and the sky: the geometry and its BVH stay as built
+            relightWindows(prepared.scene, prepared.windowUses, hourOf(d));
+            lightScene(prepared.scene, d, prepared.origin);
+        }
+        const Camera camera = cameraOf(d.camera, float(film.width) / float(film.height), prepared.origin, prepared.framingPieces);
+        Film image(settings.width, settings.height, aovs);
+        RenderCounters counters;
+        DeviceReport report;
+        renderOnDevice(prepared.scene, camera, settings, image.nextSamples(settings.spp), image, film.denoise, o.run.device,
+                       isatty(2), o.run.verbose && i == 0, counters, report);
+        const std::string path = framePath(pattern, n);
+        writeFilm(image, path, FilmOutputOptions{d.film.exposure, film.exrFloat, layers});
+        device = report.device;
+        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        secondsRendering += seconds;
+        const double left = secondsRendering / double(i + 1) * double(frames.size() - i - 1);
+        std::printf("urbis: frame %u (%zu of %zu) %s in %.2f s, about %s left\n", n, i + 1, frames.size(), path.c_str(),
+                    seconds, durationText(left).c_str());
+        std::fflush(stdout);
+    }
+    if (world && world->ranks() > 1) world->barrier();   // every frame written before the video reads them
+    if (!o.frames.video.empty() && (!world || world->isRoot())) {
+        encodeVideo(pattern, range, o.scene.animation.fps, o.frames.video);
+        std::printf("urbis: wrote %s (frames %u..%u at %g fps)\n", o.frames.video.c_str(), range.first, range.last,
+                    double(o.scene.animation.fps));
+    }
+    std::printf("urbis: wrote %zu frames of %s (%ux%u, %u spp, %s) in %.2f s\n", frames.size(), pattern.c_str(),
+                settings.width, settings.height, settings.spp, device.c_str(),
+                std::chrono::duration<double>(Clock::now() - start).count());
+}
+
+} // namespace urbis

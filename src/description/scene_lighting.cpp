@@ -1,0 +1,28 @@
+#include "description/scene_lighting.h"
+
+#include "description/celestial_parts.h"
+#include "description/scene_parts.h"
+#include "lights/light_build.h"
+#include "media/atmosphere_build.h"
+
+namespace urbis {
+
+void lightScene(Scene& scene, const SceneDescription& d, const GeoOrigin& origin) {
+    const CelestialLights celestial = celestialLightsOf(d, origin);
+    scene.sun = celestial.sun;
+    scene.night = celestial.night;
+    scene.sky = skyOf(d.sky);
+    buildAtmosphere(scene);   // takes the sun's transmittance into scene.sun: the sun is set afresh above
+    buildLights(scene);
+}
+
+void relightWindows(Scene& scene, std::span<const WindowUse> uses, float hour) {
+    const uint8_t shop = chanceByte(litShopWindowShare(hour));
+    for (WallRecord& wall : scene.walls) {
+        if (wall.object == 0 || wall.object > uses.size()) continue;
+        wall.litChance = chanceByte(litRoomShare(uses[wall.object - 1], hour));
+        wall.shopLitChance = shop;
+    }
+}
+
+} // namespace urbis
