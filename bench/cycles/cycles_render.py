@@ -6,10 +6,14 @@
 # no denoising, no adaptive sampling. Prints "cycles: import S s, render S s" (wall clock).
 import json
 import math
+import os
 import sys
 import time
 
 import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import numpy_compat  # noqa: F401,E402  (before the importer runs)
 
 args = sys.argv[sys.argv.index("--") + 1:]
 path, out = args[0], args[1]

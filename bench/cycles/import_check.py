@@ -1,10 +1,14 @@
 # Blender headless import of an urbis export: `blender -b --python-exit-code 1 --python
 # bench/cycles/import_check.py -- FILE.glb|.gltf|.obj`. Prints one line
 # "import_check: MESHES meshes, MATERIALS materials, CAMERAS cameras, LIGHTS lights, TRIANGLES triangles"
-# and exits non-zero when the importer fails or brings in no mesh (tests/export_tools_test.cpp reads it).
+# and exits non-zero when the importer fails or brings in no mesh (tests/export_cli_test.cpp reads it).
+import os
 import sys
 
 import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import numpy_compat  # noqa: F401,E402  (before the importer runs)
 
 path = sys.argv[sys.argv.index("--") + 1]
 bpy.ops.wm.read_factory_settings(use_empty=True)

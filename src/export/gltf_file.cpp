@@ -38,8 +38,10 @@ tinygltf::Value valueOf(const nlohmann::json& j) {
     return tinygltf::Value();
 }
 
-/// Appends `bytes` to the model's only buffer as a view (4-byte aligned: every element is) and returns its index.
-int addBufferView(tinygltf::Model& model, const void* bytes, size_t size, int target) {
+/// Appends `count` elements of `type` and `componentType` (`bytes` of them, 4-byte aligned: every
+/// element is) to the model's only buffer as a view of `target` and an accessor; its index.
+int addAccessor(tinygltf::Model& model, const void* bytes, size_t size, int target, int componentType, size_t count,
+                int type) {
     std::vector<unsigned char>& data = model.buffers[0].data;
     tinygltf::BufferView view;
     view.buffer = 0;
@@ -48,30 +50,27 @@ int addBufferView(tinygltf::Model& model, const void* bytes, size_t size, int ta
     view.target = target;
     data.insert(data.end(), static_cast<const unsigned char*>(bytes), static_cast<const unsigned char*>(bytes) + size);
     model.bufferViews.push_back(view);
-    return int(model.bufferViews.size() - 1);
+    tinygltf::Accessor accessor;
+    accessor.bufferView = int(model.bufferViews.size() - 1);
+    accessor.componentType = componentType;
+    accessor.count = count;
+    accessor.type = type;
+    model.accessors.push_back(accessor);
+    return int(model.accessors.size() - 1);
 }
 
 tinygltf::Primitive primitiveOf(tinygltf::Model& model, const ExportPrimitive& p) {
     const WeldedMesh mesh = weldTriangles(p.triangles);
-    tinygltf::Accessor positions;
-    positions.bufferView = addBufferView(model, mesh.positions.data(), mesh.positions.size() * sizeof(Vec3f),
-                                         TINYGLTF_TARGET_ARRAY_BUFFER);
-    positions.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    positions.count = mesh.positions.size();
-    positions.type = TINYGLTF_TYPE_VEC3;
-    positions.minValues = {mesh.lo.x, mesh.lo.y, mesh.lo.z};
-    positions.maxValues = {mesh.hi.x, mesh.hi.y, mesh.hi.z};
-    tinygltf::Accessor indices;
-    indices.bufferView = addBufferView(model, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t),
-                                       TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    indices.count = mesh.indices.size();
-    indices.type = TINYGLTF_TYPE_SCALAR;
-    model.accessors.push_back(positions);
-    model.accessors.push_back(indices);
     tinygltf::Primitive primitive;
-    primitive.attributes["POSITION"] = int(model.accessors.size() - 2);
-    primitive.indices = int(model.accessors.size() - 1);
+    const int positions = addAccessor(model, mesh.positions.data(), mesh.positions.size() * sizeof(Vec3f),
+                                      TINYGLTF_TARGET_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_FLOAT, mesh.positions.size(),
+                                      TINYGLTF_TYPE_VEC3);
+    model.accessors[size_t(positions)].minValues = {mesh.lo.x, mesh.lo.y, mesh.lo.z};
+    model.accessors[size_t(positions)].maxValues = {mesh.hi.x, mesh.hi.y, mesh.hi.z};
+    primitive.attributes["POSITION"] = positions;
+    primitive.indices = addAccessor(model, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t),
+                                    TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                                    mesh.indices.size(), TINYGLTF_TYPE_SCALAR);
     primitive.material = int(p.material);
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     return primitive;
