@@ -19,7 +19,7 @@ mkdir -p "$DEPS/debs" "$DEPS/data"
     libosmium2-dev libprotozero-dev libexpat1-dev libexpat1 libbz2-dev zlib1g-dev \
     libgeos-dev libgeos3.11.1 libgeos-c1v5 libcgal-dev libboost1.74-dev \
     libgmp-dev libgmp10 libgmpxx4ldbl libmpfr-dev libmpfr6 \
-    libtbb-dev libtbb12 libtbbmalloc2 libtbbbind-2-5 \
+    libtbb-dev libtbb12 libtbbmalloc2 libtbbbind-2-5 libtinygltf2d \
     libopenexr-dev libopenexr-3-1-30 libimath-dev libimath-3-1-29 \
     libstb0 libglfw3 libopengl0 libglvnd0 libx11-6 libx11-data libxcb1 libxau6 libxdmcp6 libbsd0 libmd0)   # urbis view's window
 cp "$VILLAGE/planet_10.068,48.135_10.071,48.137.osm" "$VILLAGE/West-Oakland.osm.bz2" "$DEPS/data/"
