@@ -103,7 +103,8 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "water.bed_albedo", "water.wind_speed", "water.wind_from", "trees", "trees.enabled", "trees.seed",
         "trees.forest_density", "trees.park_density", "trees.scrub_density", "trees.outer_forest", "trees.clearance",
         "trees.default_height", "trees.size_variation", "trees.conifer_share", "trees.roughness", "trees.lumps",
-        "trees.season", "trees.bark_albedo", "trees.leaf_albedo", "trees.needle_albedo", "trees.autumn_albedo"};
+        "trees.season", "trees.bark_albedo", "trees.leaf_albedo", "trees.needle_albedo", "trees.autumn_albedo",
+        "animation", "animation.fps", "animation.duration", "animation.camera", "animation.time"};
     EXPECT_EQ(keys, expected);
     // The geographic camera's own keys, once it is set.
     SceneDescription geo;

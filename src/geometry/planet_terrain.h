@@ -25,9 +25,6 @@ URBIS_HD inline float valueNoise2(uint32_t seed, uint32_t cx, uint32_t cy, float
 /// Bound of |grad valueNoise2| per lattice unit.
 inline constexpr float kValueNoiseSlope = 1.875f * 2.0f * 1.41421356f;
 
-/// Triplanar weights of a plane whose normal axis has the component |n_k| of the unit planet-fixed
-/// direction: max(|n_k| - kTriplanarCut, 0), normalised by their sum (at least 1/sqrt 3 - cut).
-inline constexpr float kTriplanarCut = 0.3f;
 
 /// The planet-fixed noise coordinate of octave `i` along axis `a` at offset `o` (metres, planet frame)
 /// from the camera's point: integer cell (modulo 2^32) and fraction.
@@ -57,9 +54,7 @@ URBIS_HD inline float planetHeight(const PlanetRecord& pl, Vec3f p, Vec3f& zenit
         n[a] = dot(pl.planetFromWorld[a], q);
     }
     zenith = n;
-    Vec3f w{fmaxf(fabsf(n.x) - kTriplanarCut, 0.0f), fmaxf(fabsf(n.y) - kTriplanarCut, 0.0f),
-            fmaxf(fabsf(n.z) - kTriplanarCut, 0.0f)};
-    w = w * (1.0f / (w.x + w.y + w.z));
+    const Vec3f w = triplanarWeights(n);
     // Octaves kept in full: log2 of (octave 0's wavelength / (2 lodAngle d)); the next one fades.
     const float d = length(p);
     const float full = pl.lodAngle > 0.0f && d > 0.0f ? log2f(1.0f / (pl.baseFrequency * 2.0f * pl.lodAngle * d)) : 1e30f;

@@ -2,12 +2,12 @@
 // `bottom` and `bottom + thickness` metres above its sea level. The density is the flat layer's
 // (media/cloud_density.h) read at a point's planet-fixed position, so the clouds stay put as the
 // camera moves, with the coverage field mapped triplanarly as the planet's heightfield is
-// (geometry/planet_terrain.h), and the altitude profile of the point's height above the sea. The
+// (scene/planet_record.h: triplanarWeights), and the altitude profile of the point's height above the sea. The
 // tracking (media/cloud_tracking.h) walks the ray's pieces inside the shell under one majorant.
 #pragma once
 
-#include "geometry/planet_terrain.h"
 #include "media/cloud_density.h"
+#include "scene/planet_record.h"
 
 namespace urbis {
 
@@ -29,9 +29,7 @@ URBIS_HD inline Vec3f planetFixedPosition(const PlanetRecord& pl, Vec3f p) {
 /// stretches. Never above the largest of the three, so the field's majorants still bound it.
 URBIS_HD inline float cloudShellCoverage(const CloudLayer& layer, ArrayView<float> coverage, Vec3f q) {
     const Vec3f n = normalize(q);
-    Vec3f w{fmaxf(fabsf(n.x) - kTriplanarCut, 0.0f), fmaxf(fabsf(n.y) - kTriplanarCut, 0.0f),
-            fmaxf(fabsf(n.z) - kTriplanarCut, 0.0f)};
-    w = w * (1.0f / (w.x + w.y + w.z));
+    const Vec3f w = triplanarWeights(n);
     float sum = 0.0f;
     for (int k = 0; k < 3; ++k)
         if (w[k] > 0.0f) sum += w[k] * cloudCoverageAt(layer, coverage, q[(k + 1) % 3], q[(k + 2) % 3]);

@@ -58,6 +58,17 @@ URBIS_HD inline float radialOffset(const PlanetRecord& pl, Vec3f p, float& toCen
     return (2.0f * D * dot(p, pl.up) + dot(p, p)) / (toCentre + D);
 }
 
+/// Triplanar weights of a plane whose normal axis has the component |n_k| of the unit planet-fixed
+/// direction: max(|n_k| - kTriplanarCut, 0), normalised by their sum (at least 1/sqrt 3 - cut). Shared
+/// by the heightfield (geometry/planet_terrain.h) and the cloud shell's coverage (media/cloud_shell.h).
+inline constexpr float kTriplanarCut = 0.3f;
+
+URBIS_HD inline Vec3f triplanarWeights(Vec3f n) {
+    const Vec3f w{fmaxf(fabsf(n.x) - kTriplanarCut, 0.0f), fmaxf(fabsf(n.y) - kTriplanarCut, 0.0f),
+                  fmaxf(fabsf(n.z) - kTriplanarCut, 0.0f)};
+    return w * (1.0f / (w.x + w.y + w.z));
+}
+
 /// Altitude (metres) of the world point `p` above the base sphere, precise near the camera.
 URBIS_HD inline float planetAltitude(const PlanetRecord& pl, Vec3f p) {
     float toCentre;
