@@ -72,3 +72,30 @@ TEST(MpiRender, PhotonIntegratorIsRefusedOnEveryRank) {
     EXPECT_NE(r.err.find("only the path integrator"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "p.png"));
 }
+
+TEST(MpiRender, TwoRanksShareASequenceByFrame) {
+    std::string why;
+    const std::string mpirun = mpirunPrefix(2, why);
+    if (mpirun.empty()) GTEST_SKIP() << why;
+    auto dir = scratchDir("mpi_sequence");
+    // Four frames of a camera moving over a small generated city.
+    std::ofstream(dir / "anim.json") << R"({"source": {"buildings": 20, "seed": 3}, "integrator": {"spp": 1},
+        "film": {"width": 32, "height": 20}, "animation": {"fps": 1, "camera": [
+        {"time": 0, "position": [200, 100, 60], "target": [0, 10, 0]},
+        {"time": 3, "position": [-150, 80, 120], "target": [0, 10, 0]}]}})";
+    ASSERT_EQ(runUrbis("render --scene anim.json --frames 0:3 --threads 1 --out one/f%d.png", dir).exitCode, 0);
+    CommandResult two = runUrbis("render --scene anim.json --frames 0:3 --threads 1 --out two/f%d.png", dir, mpirun);
+    ASSERT_EQ(two.exitCode, 0) << two.err;
+    for (int n = 0; n < 4; ++n) {
+        const std::string name = "f" + std::to_string(n) + ".png";
+        EXPECT_EQ(readFile(dir / "one" / name), readFile(dir / "two" / name)) << name << " differs from one process's";
+    }
+    // Each rank rendered its own two frames: every frame's progress line comes, once.
+    for (int n = 0; n < 4; ++n) {
+        const std::string line = "urbis: frame " + std::to_string(n) + " (";
+        const size_t at = two.out.find(line);
+        EXPECT_NE(at, std::string::npos) << two.out;
+        EXPECT_EQ(two.out.find(line, at + 1), std::string::npos) << "frame " << n << " rendered twice:\n" << two.out;
+    }
+    EXPECT_NE(two.out.find("(2 of 2)"), std::string::npos) << "each rank renders two of the four frames:\n" << two.out;
+}
