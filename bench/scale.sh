@@ -25,8 +25,8 @@ run() { "$@" 2>&1 | tee -a "$LOG"; return "${PIPESTATUS[0]}"; }
 status=0
 
 # Open MPI unpacked from .debs (bench/scale_deps.sh) runs from wherever it lies once told its prefix.
-MPIRUN=$(command -v mpirun || true)
-if [[ -z $MPIRUN && -n ${ROOT:-} && -x $ROOT/usr/bin/mpirun.openmpi ]]; then
+MPIRUN=$(command -v mpirun || true)   # the carried one, where there is one, wins: its libraries are first on the path
+if [[ -n ${ROOT:-} && -x $ROOT/usr/bin/mpirun.openmpi ]]; then
   export OPAL_PREFIX=$ROOT/usr PATH=$ROOT/usr/bin:$PATH
   export LD_LIBRARY_PATH=$ROOT/usr/lib/x86_64-linux-gnu/openmpi/lib:$LD_LIBRARY_PATH
   MPIRUN=$ROOT/usr/bin/mpirun.openmpi
@@ -55,7 +55,7 @@ fi
 # Strong scaling: the same frame (the default world, 1920x1080, CPU) over more ranks, the cores shared out.
 if [[ $STEPS == *,mpi,* ]]; then
   [[ -n $MPIRUN ]] || { echo "scale.sh: no mpirun (install openmpi-bin, or carry bench/scale_deps.sh's .debs)" | tee -a "$LOG"; exit 1; }
-  for ranks in ${MPI_RANKS:-1,2,4,8,16}; do
+  for ranks in $(tr , " " <<< "${MPI_RANKS:-1,2,4,8,16}"); do
     ranks=${ranks//,/}
     (( ranks <= CORES )) || continue
     threads=$(( CORES / ranks ))
@@ -82,17 +82,18 @@ PY
   fi
 fi
 
-# A sequence spread by frame (needs `urbis render --frames`, issue 25's frame loop).
+# A sequence spread by frame: the README's fly-over (docs/examples/dusk_flyover.json), frames 0-31.
 if [[ $STEPS == *,sequence,* ]]; then
   if "$BIN" render --help | grep -q -- "--frames"; then
-    for ranks in ${MPI_RANKS:-1,2,4,8,16}; do
+    for ranks in $(tr , " " <<< "${MPI_RANKS:-1,2,4,8,16}"); do
       ranks=${ranks//,/}
       (( ranks <= CORES )) || continue
       say "a 32-frame sequence on $ranks ranks"
-      start=$(date +%s.%N)
-      run "$MPIRUN" -n "$ranks" "${MPI_ARGS[@]}" "$BIN" render --device cpu --threads $(( CORES / ranks )) --width 960 \
-          --height 540 --spp 8 --frames 1:32 --out "$OUT/seq_${ranks}_%04d.png" || status=1
-      echo "sequence on $ranks ranks: $(echo "$(date +%s.%N) - $start" | bc) s" | tee -a "$LOG"
+      start=$(date +%s%N)
+      run "$MPIRUN" -n "$ranks" "${MPI_ARGS[@]}" "$BIN" render --device cpu --threads $(( CORES / ranks )) \
+          --scene "$(dirname "$0")/../docs/examples/dusk_flyover.json" --width 960 --height 540 --spp 8 \
+          --frames 0:31 --out "$OUT/seq_${ranks}/f%04d.png" || status=1
+      echo "sequence on $ranks ranks: $(( ($(date +%s%N) - start) / 1000000 )) ms" | tee -a "$LOG"
     done
   else
     echo "scale.sh: this urbis has no --frames: the sequence step needs the frame loop" | tee -a "$LOG"
