@@ -38,12 +38,12 @@ TEST(ClusterTiles, SizeLeavesEveryRankSeveralTiles) {
 }
 
 TEST(ClusterFrames, EachFrameOnceOverTheRanks) {
-    std::vector<int64_t> frames(23);
-    std::iota(frames.begin(), frames.end(), int64_t(100));
+    std::vector<uint32_t> frames(23);
+    std::iota(frames.begin(), frames.end(), uint32_t(100));
     for (int ranks : {1, 2, 3, 8, 30}) {
-        std::vector<int64_t> all;
+        std::vector<uint32_t> all;
         for (int r = 0; r < ranks; ++r) {
-            std::vector<int64_t> share = framesOfRank(frames, r, ranks);
+            std::vector<uint32_t> share = framesOfRank(frames, r, ranks);
             EXPECT_LE(share.size(), (frames.size() + size_t(ranks) - 1) / size_t(ranks));  // balanced
             EXPECT_TRUE(std::is_sorted(share.begin(), share.end()));
             all.insert(all.end(), share.begin(), share.end());
@@ -51,7 +51,7 @@ TEST(ClusterFrames, EachFrameOnceOverTheRanks) {
         std::sort(all.begin(), all.end());
         EXPECT_EQ(all, frames) << ranks << " ranks";
     }
-    EXPECT_EQ(framesOfRank(frames, 1, 4), (std::vector<int64_t>{101, 105, 109, 113, 117, 121}));
+    EXPECT_EQ(framesOfRank(frames, 1, 4), (std::vector<uint32_t>{101, 105, 109, 113, 117, 121}));
     EXPECT_THROW(framesOfRank(frames, 4, 4), std::invalid_argument);
     EXPECT_THROW(framesOfRank(frames, 0, 0), std::invalid_argument);
 }

@@ -38,6 +38,14 @@ std::string durationText(double seconds) {
     return std::to_string(s / 3600) + " h " + std::to_string(s % 3600 / 60) + " min";
 }
 
+/// This rank's share of `frames`: all of them in one process. Every rank lists the frames still to
+/// render before any writes one (the barrier), so that all ranks share out the same list.
+std::vector<uint32_t> framesOfThisRank(const std::vector<uint32_t>& frames, const MpiWorld* world) {
+    if (!world || world->ranks() < 2) return frames;
+    world->barrier();
+    return framesOfRank(frames, world->rank(), world->ranks());
+}
+
 } // namespace
 
 void checkFrameOptions(const RenderOptions& o) {
@@ -55,19 +63,6 @@ void checkFrameOptions(const RenderOptions& o) {
     if (!folder.empty() && !std::filesystem::create_directories(folder, ec) && ec)
         throw InputError(folder.string() + ": cannot make the frames' folder (" + ec.message() + ")", FailureKind::Output);
 }
-
-namespace {
-
-/// This rank's share of `frames`: all of them in one process. Every rank lists the frames still to
-/// render before any writes one (the barrier), so that all ranks share out the same list.
-std::vector<uint32_t> framesOfThisRank(const std::vector<uint32_t>& frames, const MpiWorld* world) {
-    if (!world || world->ranks() < 2) return frames;
-    world->barrier();
-    const std::vector<int64_t> share = framesOfRank({frames.begin(), frames.end()}, world->rank(), world->ranks());
-    return {share.begin(), share.end()};
-}
-
-} // namespace
 
 void renderFrames(const RenderOptions& o, PreparedScene& prepared, const MpiWorld* world) {
     const auto start = Clock::now();

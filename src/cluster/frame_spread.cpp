@@ -4,9 +4,9 @@
 
 namespace urbis {
 
-std::vector<int64_t> framesOfRank(const std::vector<int64_t>& frames, int rank, int ranks) {
+std::vector<uint32_t> framesOfRank(const std::vector<uint32_t>& frames, int rank, int ranks) {
     if (ranks < 1 || rank < 0 || rank >= ranks) throw std::invalid_argument("framesOfRank: no such rank");
-    std::vector<int64_t> share;
+    std::vector<uint32_t> share;
     for (size_t i = size_t(rank); i < frames.size(); i += size_t(ranks)) share.push_back(frames[i]);
     return share;
 }

@@ -11,6 +11,6 @@ namespace urbis {
 /// index on (round robin, so that ranks share the costly and the cheap ends of a sequence), in
 /// the sequence's order. Over all ranks each frame comes exactly once. Throws
 /// std::invalid_argument unless 0 <= rank < ranks.
-std::vector<int64_t> framesOfRank(const std::vector<int64_t>& frames, int rank, int ranks);
+std::vector<uint32_t> framesOfRank(const std::vector<uint32_t>& frames, int rank, int ranks);
 
 } // namespace urbis
