@@ -48,6 +48,24 @@ TEST(PlaceNames, ANodeAtItsLocationAWayAtTheMeanOfItsNodes) {
     EXPECT_NEAR(places[2].lat, 50.0, 1e-9);
 }
 
+TEST(PlaceNames, ARelationAtTheMeanOfItsMemberWaysNodes) {
+    using namespace test;
+    // A forest mapped as a multipolygon whose outer way has no name of its own: found by the relation's name.
+    const std::string path = writeOsm("relation_names.osm",
+                                      node(1, 0, 0) + node(2, 1000, 0) + node(3, 1000, 1000) + node(4, 0, 1000) +
+                                          way(10, {1, 2, 3, 4, 1}, tag("landuse", "forest")) +
+                                          "<relation id='20' version='1'><member type='way' ref='10' role='outer'/>"
+                                          "<member type='way' ref='77' role='outer'/>" +
+                                          tag("type", "multipolygon") + tag("name", "Holz") + "</relation>\n" +
+                                          "<relation id='21' version='1'><member type='way' ref='78' role='outer'/>" +
+                                          tag("name", "Missing") + "</relation>\n");
+    const std::vector<NamedPlace> places = readPlaceNames(path);
+    ASSERT_EQ(places.size(), 1u);   // the relation whose member is not in the file is left out
+    EXPECT_EQ(places[0].name, "Holz");
+    EXPECT_NEAR(places[0].lon, 10.0005, 1e-9);
+    EXPECT_NEAR(places[0].lat, 50.0005, 1e-9);
+}
+
 TEST(PlaceNames, AFileItCannotReadIsNamed) {
     try {
         readPlaceNames("/nonexistent/city.osm.pbf");
