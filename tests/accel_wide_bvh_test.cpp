@@ -1,0 +1,313 @@
+// The 8-wide compressed BVH: its shape and conservative quantisation, a build the same for any
+// thread count, and closest hits equal to brute force and to the 4-wide BVH for every lane test.
+#include "accel/wide_bvh_build.h"
+#include "accel_test_scene.h"
+#include "citygen/city_mesher.h"
+#include "geometry/triangle_scene.h"
+#include "geometry/wide_triangle_scene.h"
+#include "osm/osm_import.h"
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <cfloat>
+#include <cstring>
+#include <filesystem>
+#include <random>
+
+using namespace urbis;
+
+namespace {
+
+/// The lane tests this CPU can run.
+std::vector<WideIsa> isasHere() {
+    std::vector<WideIsa> isas{WideIsa::Scalar};
+#if URBIS_HAVE_SSE
+    isas.push_back(WideIsa::Sse);
+    if (hostWideIsa() == WideIsa::Avx2) isas.push_back(WideIsa::Avx2);
+#endif
+    return isas;
+}
+
+const char* isaName(WideIsa isa) { return isa == WideIsa::Scalar ? "scalar" : isa == WideIsa::Sse ? "SSE" : "AVX2"; }
+
+unsigned lanesWith(WideIsa isa, const WideBvhNode& node, const BvhRay& r, const Ray& ray, float (&tEntry)[kWideBvhWidth]) {
+    switch (isa) {
+    case WideIsa::Sse: return intersectWideLanes<WideIsa::Sse>(node, r, ray.tmin, ray.tmax, tEntry);
+    case WideIsa::Avx2: return intersectWideLanes<WideIsa::Avx2>(node, r, ray.tmin, ray.tmax, tEntry);
+    default: return intersectWideLanes<WideIsa::Scalar>(node, r, ray.tmin, ray.tmax, tEntry);
+    }
+}
+
+Hit traceWith(WideIsa isa, const WideTriangleSceneView& view, const Ray& ray, bool anyHit) {
+    switch (isa) {
+    case WideIsa::Sse: return traceWideTriangles<WideIsa::Sse>(view, ray, anyHit);
+    case WideIsa::Avx2: return traceWideTriangles<WideIsa::Avx2>(view, ray, anyHit);
+    default: return traceWideTriangles<WideIsa::Scalar>(view, ray, anyHit);
+    }
+}
+
+bool inside(const Bounds3f& in, const Bounds3f& out) {
+    return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.lo.z >= out.lo.z && in.hi.x <= out.hi.x &&
+           in.hi.y <= out.hi.y && in.hi.z <= out.hi.z;
+}
+
+/// Every primitive in exactly one leaf, inside its leaf's decoded box and inside every decoded box
+/// above it (the quantisation is conservative; a child's decoded box, on its own grid, may reach
+/// past its parent's); leaves within the size limit; depth under 64.
+void expectWellFormed(const WideBvh& bvh, const std::vector<Bounds3f>& primBounds, uint32_t maxLeafSize) {
+    std::vector<int> seen(primBounds.size(), 0);
+    struct Item {
+        uint32_t node, depth;
+        Bounds3f box;
+    };
+    Bounds3f everything;
+    everything.extend(Vec3f{-FLT_MAX, -FLT_MAX, -FLT_MAX});
+    everything.extend(Vec3f{FLT_MAX, FLT_MAX, FLT_MAX});
+    std::vector<Item> stack{{0, 1, everything}};
+    uint32_t maxDepth = 0;
+    while (!stack.empty()) {
+        const Item it = stack.back();
+        stack.pop_back();
+        ASSERT_LT(it.node, bvh.nodes.size());
+        const WideBvhNode& n = bvh.nodes[it.node];
+        maxDepth = std::max(maxDepth, it.depth);
+        uint32_t slot = n.primBase, child = n.childBase;
+        for (int l = 0; l < kWideBvhWidth; ++l) {
+            const Bounds3f box = decodedBox(n, l);
+            const bool inner = n.innerMask >> l & 1u;
+            if (!inner && n.leafSize(l) == 0) {
+                EXPECT_GT(n.q[0][l], n.q[3][l]) << "an unused lane's box is empty";
+                continue;
+            }
+            const Bounds3f within{vmax(box.lo, it.box.lo), vmin(box.hi, it.box.hi)};
+            if (inner) {
+                stack.push_back({child++, it.depth + 1, within});
+                continue;
+            }
+            EXPECT_LE(n.leafSize(l), maxLeafSize);
+            for (uint32_t i = slot; i < slot + n.leafSize(l); ++i) {
+                ++seen[bvh.primOrder[i]];
+                EXPECT_TRUE(inside(primBounds[bvh.primOrder[i]], within)) << "prim " << bvh.primOrder[i];
+            }
+            slot += n.leafSize(l);
+        }
+    }
+    for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << i;
+    EXPECT_LT(maxDepth, 64u);
+}
+
+/// Random rays through `box`: half from anywhere in it towards anywhere, half aimed at random
+/// triangles; some short.
+std::vector<Ray> makeRays(const std::vector<Triangle>& tris, const Bounds3f& box, int count, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_int_distribution<size_t> pick(0, tris.size() - 1);
+    auto anywhere = [&] {
+        const Vec3f e = box.extent();
+        return Vec3f{box.lo.x + e.x * unit(rng), box.lo.y + e.y * unit(rng), box.lo.z + e.z * unit(rng)};
+    };
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        const Vec3f o = anywhere();
+        Vec3f target = anywhere();
+        if (i % 2) {
+            const Triangle& t = tris[pick(rng)];
+            float a = unit(rng), b = unit(rng);
+            if (a + b > 1.0f) {
+                a = 1.0f - a;
+                b = 1.0f - b;
+            }
+            target = t.p0 + (t.p1 - t.p0) * a + (t.p2 - t.p0) * b;
+        }
+        Ray ray{o, target - o};
+        if (i % 7 == 0) ray.tmax = 0.5f + unit(rng);
+        rays.push_back(ray);
+    }
+    return rays;
+}
+
+Hit bruteForce(const std::vector<Triangle>& tris, Ray ray) {
+    const WatertightRay wr(ray);
+    Hit hit;
+    for (uint32_t i = 0; i < tris.size(); ++i) {
+        float t, u, v;
+        if (intersectTriangle(tris[i], ray, wr, t, u, v)) {
+            hit = {i, t, u, v};
+            ray.tmax = t;
+        }
+    }
+    return hit;
+}
+
+/// The triangles in the wide BVH's leaf order.
+std::vector<Triangle> reorder(const std::vector<Triangle>& tris, const WideBvh& bvh) {
+    std::vector<Triangle> sorted(tris.size());
+    for (size_t i = 0; i < tris.size(); ++i) sorted[i] = tris[bvh.primOrder[i]];
+    return sorted;
+}
+
+/// Downtown San Francisco as the benchmarks mesh it (plain walls), or nothing without the shared data.
+std::vector<Triangle> sanFrancisco() {
+    const std::string path = URBIS_SHARED_DATA "/sf_downtown_2023.osm.pbf";
+    if (!std::filesystem::exists(path)) return {};
+    CityMeshOptions options;
+    options.geometry.walls = Representation::Plain;
+    return meshCity(importOsm(path, ImportOptions{}), options).mesh.triangles;
+}
+
+/// Traces `rays` through the wide BVH with every lane test this CPU has and expects the same hits,
+/// bit for bit, and the closest hit and any-hit answers of the checked 4-wide BVH (same distance;
+/// the same triangle unless two tie at that distance, on a shared edge). `bruteForceEvery`-th ray
+/// is also checked against brute force. Returns the number of hits.
+size_t expectSameHits(const std::vector<Triangle>& tris, const std::vector<Ray>& rays, size_t bruteForceEvery) {
+    const std::vector<Bounds3f> bounds = test::triangleBounds(tris);
+    const Bvh narrow = buildBvh(bounds);
+    const WideBvh wide = buildWideBvh(bounds);
+    const std::vector<Triangle> narrowTris = test::reorder(tris, narrow), wideTris = reorder(tris, wide);
+    const TriangleSceneView narrowView{narrow.nodes.data(), narrowTris.data(), uint32_t(narrowTris.size())};
+    const WideTriangleSceneView wideView{wide.nodes.data(), wideTris.data(), uint32_t(wideTris.size())};
+    std::atomic<size_t> hits{0}, tMismatch{0}, primMismatch{0}, anyMismatch{0}, isaMismatch{0}, bruteMismatch{0};
+    tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
+        const Hit reference = intersectClosest(narrowView, rays[i]);
+        const Hit got = traceWith(WideIsa::Scalar, wideView, rays[i], false);
+        for (WideIsa isa : isasHere()) {
+            const Hit other = traceWith(isa, wideView, rays[i], false);
+            if (std::memcmp(&other, &got, sizeof(Hit)) != 0) ++isaMismatch;
+            if (traceWith(isa, wideView, rays[i], true).valid() != got.valid()) ++anyMismatch;
+        }
+        if (got.valid() != reference.valid() || (got.valid() && got.t != reference.t)) ++tMismatch;
+        if (got.valid() && got.valid() == reference.valid()) {
+            ++hits;
+            if (wide.primOrder[got.prim] != narrow.primOrder[reference.prim] && got.t != reference.t) ++primMismatch;
+        }
+        if (i % bruteForceEvery == 0) {
+            const Hit brute = bruteForce(tris, rays[i]);
+            if (brute.valid() != got.valid() || (brute.valid() && brute.t != got.t)) ++bruteMismatch;
+        }
+    });
+    EXPECT_EQ(isaMismatch, 0u);
+    EXPECT_EQ(anyMismatch, 0u);
+    EXPECT_EQ(tMismatch, 0u);
+    EXPECT_EQ(primMismatch, 0u);
+    EXPECT_EQ(bruteMismatch, 0u);
+    return hits;
+}
+
+} // namespace
+
+TEST(WideBvhBuild, EmptyInputIsNeverHit) {
+    const WideBvh bvh = buildWideBvh({});
+    ASSERT_EQ(bvh.nodes.size(), 1u);
+    const WideTriangleSceneView view{bvh.nodes.data(), nullptr, 0};
+    for (WideIsa isa : isasHere()) EXPECT_FALSE(traceWith(isa, view, Ray{{0, 1, 0}, {0, -1, 0}}, false).valid()) << isaName(isa);
+}
+
+TEST(WideBvhBuild, WellFormedAndConservativeForSeveralOptions) {
+    const std::vector<Bounds3f> bounds = test::triangleBounds(test::makeCityScene(3));
+    for (uint32_t leaf : {1u, 2u, 4u, 8u, 15u}) {
+        BvhBuildOptions options;
+        options.maxLeafSize = leaf;
+        SCOPED_TRACE(leaf);
+        expectWellFormed(buildWideBvh(bounds, options), bounds, leaf);
+    }
+    // Far from the origin, where a float's step is coarse, and in a box of zero extent on one axis.
+    std::vector<Bounds3f> far = bounds;
+    for (Bounds3f& b : far) {
+        b.lo = b.lo + Vec3f{3.0e5f, 0.0f, -7.0e5f};
+        b.hi = b.hi + Vec3f{3.0e5f, 0.0f, -7.0e5f};
+        b.lo.y = b.hi.y = 2.0f;
+    }
+    expectWellFormed(buildWideBvh(far), far, BvhBuildOptions{}.maxLeafSize);
+}
+
+TEST(WideBvhBuild, SameNodesForAnyThreadCount) {
+    const std::vector<Bounds3f> bounds = test::triangleBounds(test::makeCityScene(7, 6000, 2000));
+    auto build = [&](int threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        BvhBuildOptions options;
+        options.parallelThreshold = 256;
+        return buildWideBvh(bounds, options);
+    };
+    const WideBvh one = build(1);
+    for (int threads : {2, 4}) {
+        const WideBvh many = build(threads);
+        ASSERT_EQ(one.nodes.size(), many.nodes.size());
+        EXPECT_EQ(0, std::memcmp(one.nodes.data(), many.nodes.data(), one.nodes.size() * sizeof(WideBvhNode)));
+        EXPECT_EQ(one.primOrder, many.primOrder);
+    }
+}
+
+TEST(WideBvhBuild, CostlyPrimitivesGetMarkedLeavesOfTheirOwn) {
+    std::vector<Bounds3f> walls;
+    for (int i = 0; i < 40; ++i) walls.push_back({{float(i), 0.0f, 0.0f}, {float(i) + 0.9f, 10.0f, 0.2f}});
+    std::vector<uint32_t> costs(walls.size(), 16u);
+    costs[5] = 1u;   // one cheap primitive among them
+    const WideBvh bvh = buildWideBvh(walls, BvhBuildOptions{}, costs);
+    expectWellFormed(bvh, walls, BvhBuildOptions{}.maxLeafSize);
+    int costly = 0, cheap = 0;
+    for (const WideBvhNode& n : bvh.nodes) {
+        uint32_t slot = n.primBase;
+        for (int l = 0; l < kWideBvhWidth; ++l) {
+            if (n.leafSize(l) == 0) continue;
+            EXPECT_EQ(n.leafSize(l), 1u);
+            EXPECT_EQ(n.costlyLeaf(l), costs[bvh.primOrder[slot]] > 1);
+            (n.costlyLeaf(l) ? costly : cheap) += 1;
+            slot += n.leafSize(l);
+        }
+    }
+    EXPECT_EQ(costly, 39);
+    EXPECT_EQ(cheap, 1);
+}
+
+TEST(WideBvhTraverse, LaneTestsAgreeBitForBit) {
+    const std::vector<Triangle> tris = test::makeCityScene(11);
+    const WideBvh bvh = buildWideBvh(test::triangleBounds(tris));
+    Bounds3f box;
+    for (const Triangle& t : tris) box.extend(t.p0);
+    std::vector<Ray> rays = makeRays(tris, box, 2000, 4);
+    // Along the axes too: direction components of zero, whose inverses are +-FLT_MAX.
+    for (size_t i = 0; i < rays.size(); i += 5) rays[i].dir = {i % 2 ? 0.0f : -0.0f, -1.0f, 0.0f};
+    for (size_t i = 1; i < rays.size(); i += 5) rays[i].dir = {i % 3 ? 1.0f : -1.0f, 0.0f, 0.0f};
+    int compared = 0;
+    for (const Ray& ray : rays) {
+        const BvhRay r(ray);
+        for (size_t n = 0; n < bvh.nodes.size(); n += 7) {
+            float expected[kWideBvhWidth];
+            const unsigned expectedMask = lanesWith(WideIsa::Scalar, bvh.nodes[n], r, ray, expected);
+            for (WideIsa isa : isasHere()) {
+                float got[kWideBvhWidth];
+                ASSERT_EQ(lanesWith(isa, bvh.nodes[n], r, ray, got), expectedMask) << isaName(isa) << " node " << n;
+                for (int l = 0; l < kWideBvhWidth; ++l)
+                    if (expectedMask >> l & 1u) {
+                        ASSERT_EQ(std::memcmp(&got[l], &expected[l], sizeof(float)), 0) << isaName(isa);
+                    }
+                ++compared;
+            }
+        }
+    }
+    EXPECT_GT(compared, 0);
+}
+
+TEST(WideBvhTraverse, ClosestHitsEqualBruteForceOnAGeneratedCity) {
+    const std::vector<Triangle> tris = test::makeCityScene(5);
+    Bounds3f box{{-120.0f, 0.1f, -120.0f}, {120.0f, 80.0f, 120.0f}};
+    const std::vector<Ray> rays = makeRays(tris, box, 100000, 9);
+    EXPECT_GT(expectSameHits(tris, rays, 2), 50000u);
+}
+
+TEST(WideBvhTraverse, ClosestHitsEqualOnSanFrancisco) {
+    const std::vector<Triangle> tris = sanFrancisco();
+    if (tris.empty()) GTEST_SKIP() << URBIS_SHARED_DATA "/sf_downtown_2023.osm.pbf not found (the shared data), skipping";
+    Bounds3f box;
+    for (const Triangle& t : tris) {
+        box.extend(t.p0);
+        box.extend(t.p1);
+        box.extend(t.p2);
+    }
+    box.hi.y = 2.0f * box.hi.y;
+    // 100k rays against the 4-wide BVH (itself checked against brute force), one in 50 against brute force too.
+    const std::vector<Ray> rays = makeRays(tris, box, 100000, 21);
+    EXPECT_GT(expectSameHits(tris, rays, 50), 30000u);
+}
