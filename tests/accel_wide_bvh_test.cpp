@@ -1,6 +1,7 @@
 // The 8-wide compressed BVH: its shape and conservative quantisation, a build the same for any
 // thread count, and closest hits equal to brute force and to the 4-wide BVH for every lane test.
 #include "accel/wide_bvh_build.h"
+#include "accel/wide_lanes_avx2.h"
 #include "accel_test_scene.h"
 #include "citygen/city_mesher.h"
 #include "geometry/triangle_scene.h"
@@ -33,19 +34,11 @@ std::vector<WideIsa> isasHere() {
 const char* isaName(WideIsa isa) { return isa == WideIsa::Scalar ? "scalar" : isa == WideIsa::Sse ? "SSE" : "AVX2"; }
 
 unsigned lanesWith(WideIsa isa, const WideBvhNode& node, const BvhRay& r, const Ray& ray, float (&tEntry)[kWideBvhWidth]) {
-    switch (isa) {
-    case WideIsa::Sse: return intersectWideLanes<WideIsa::Sse>(node, r, ray.tmin, ray.tmax, tEntry);
-    case WideIsa::Avx2: return intersectWideLanes<WideIsa::Avx2>(node, r, ray.tmin, ray.tmax, tEntry);
-    default: return intersectWideLanes<WideIsa::Scalar>(node, r, ray.tmin, ray.tmax, tEntry);
-    }
-}
-
-Hit traceWith(WideIsa isa, const WideTriangleSceneView& view, const Ray& ray, bool anyHit) {
-    switch (isa) {
-    case WideIsa::Sse: return traceWideTriangles<WideIsa::Sse>(view, ray, anyHit);
-    case WideIsa::Avx2: return traceWideTriangles<WideIsa::Avx2>(view, ray, anyHit);
-    default: return traceWideTriangles<WideIsa::Scalar>(view, ray, anyHit);
-    }
+#if URBIS_HAVE_SSE
+    if (isa == WideIsa::Avx2) return WideLanesAvx2::test(node, r, ray.tmin, ray.tmax, tEntry);
+    if (isa == WideIsa::Sse) return WideLanesSse::test(node, r, ray.tmin, ray.tmax, tEntry);
+#endif
+    return WideLanesScalar::test(node, r, ray.tmin, ray.tmax, tEntry);
 }
 
 bool inside(const Bounds3f& in, const Bounds3f& out) {
@@ -171,11 +164,11 @@ size_t expectSameHits(const std::vector<Triangle>& tris, const std::vector<Ray>&
     std::atomic<size_t> hits{0}, tMismatch{0}, primMismatch{0}, anyMismatch{0}, isaMismatch{0}, bruteMismatch{0};
     tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
         const Hit reference = intersectClosest(narrowView, rays[i]);
-        const Hit got = traceWith(WideIsa::Scalar, wideView, rays[i], false);
+        const Hit got = traceWideTriangles(WideIsa::Scalar, wideView, rays[i], false);
         for (WideIsa isa : isasHere()) {
-            const Hit other = traceWith(isa, wideView, rays[i], false);
+            const Hit other = traceWideTriangles(isa, wideView, rays[i], false);
             if (std::memcmp(&other, &got, sizeof(Hit)) != 0) ++isaMismatch;
-            if (traceWith(isa, wideView, rays[i], true).valid() != got.valid()) ++anyMismatch;
+            if (traceWideTriangles(isa, wideView, rays[i], true).valid() != got.valid()) ++anyMismatch;
         }
         if (got.valid() != reference.valid() || (got.valid() && got.t != reference.t)) ++tMismatch;
         if (got.valid() && got.valid() == reference.valid()) {
@@ -201,7 +194,7 @@ TEST(WideBvhBuild, EmptyInputIsNeverHit) {
     const WideBvh bvh = buildWideBvh({});
     ASSERT_EQ(bvh.nodes.size(), 1u);
     const WideTriangleSceneView view{bvh.nodes.data(), nullptr, 0};
-    for (WideIsa isa : isasHere()) EXPECT_FALSE(traceWith(isa, view, Ray{{0, 1, 0}, {0, -1, 0}}, false).valid()) << isaName(isa);
+    for (WideIsa isa : isasHere()) EXPECT_FALSE(traceWideTriangles(isa, view, Ray{{0, 1, 0}, {0, -1, 0}}, false).valid()) << isaName(isa);
 }
 
 TEST(WideBvhBuild, WellFormedAndConservativeForSeveralOptions) {
