@@ -59,42 +59,6 @@ void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, u
     EXPECT_LT(maxDepth, 64u);
 }
 
-/// Random rays: half from anywhere towards anywhere, half aimed at random triangles.
-std::vector<Ray> makeRays(const std::vector<Triangle>& tris, int count, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> pos(-120.0f, 120.0f), y(0.1f, 80.0f), unit(0.0f, 1.0f);
-    std::uniform_int_distribution<size_t> pick(0, tris.size() - 1);
-    std::vector<Ray> rays;
-    for (int i = 0; i < count; ++i) {
-        const Vec3f o{pos(rng), y(rng), pos(rng)};
-        Vec3f target{pos(rng), y(rng) - 20.0f, pos(rng)};
-        if (i % 2) {
-            const Triangle& t = tris[pick(rng)];
-            float a = unit(rng), b = unit(rng);
-            if (a + b > 1.0f) { a = 1.0f - a; b = 1.0f - b; }
-            target = t.p0 + (t.p1 - t.p0) * a + (t.p2 - t.p0) * b;
-        }
-        Ray ray{o, target - o};
-        if (i % 7 == 0) ray.tmax = 0.5f + unit(rng);   // some short rays
-        if (i % 11 == 0) ray.dir = normalize(ray.dir);
-        rays.push_back(ray);
-    }
-    return rays;
-}
-
-Hit bruteForce(const std::vector<Triangle>& tris, Ray ray) {
-    const WatertightRay wr(ray);
-    Hit hit;
-    for (uint32_t i = 0; i < tris.size(); ++i) {
-        float t, u, v;
-        if (intersectTriangle(tris[i], ray, wr, t, u, v)) {
-            hit = {i, t, u, v};
-            ray.tmax = t;
-        }
-    }
-    return hit;
-}
-
 } // namespace
 
 TEST(BvhBuild, EmptyInputIsNeverHit) {
@@ -189,9 +153,9 @@ TEST(BvhTraverse, ClosestHitEqualsBruteForce) {
     const Bvh bvh = buildBvh(test::triangleBounds(tris));
     const std::vector<Triangle> sorted = test::reorder(tris, bvh);
     const TriangleSceneView view{bvh.nodes.data(), sorted.data(), uint32_t(sorted.size())};
-    const std::vector<Ray> rays = makeRays(tris, 100000, 9);
+    const std::vector<Ray> rays = test::cityRays(tris, test::kCitySceneRayBox, 20.0f, 100000, 9);
     std::vector<Hit> expected(rays.size());
-    tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) { expected[i] = bruteForce(sorted, rays[i]); });
+    tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) { expected[i] = test::bruteForce(sorted, rays[i]); });
     int hits = 0, primMismatch = 0, tMismatch = 0, anyMismatch = 0;
     for (size_t i = 0; i < rays.size(); ++i) {
         const Hit got = intersectClosest(view, rays[i]);

@@ -4,6 +4,7 @@
 
 #include "accel/bvh_build.h"
 #include "accel/bvh_node.h"
+#include "geometry/triangle_intersect.h"
 #include "scene/triangle.h"
 
 #include <cstdint>
@@ -63,6 +64,54 @@ inline std::vector<Triangle> reorder(const std::vector<Triangle>& tris, const Bv
     std::vector<Triangle> sorted(tris.size());
     for (size_t i = 0; i < tris.size(); ++i) sorted[i] = tris[bvh.primOrder[i]];
     return sorted;
+}
+
+/// Where makeCityScene's rays start (and end): around its buildings and up to twice their height.
+inline const Bounds3f kCitySceneRayBox{{-120.0f, 0.1f, -120.0f}, {120.0f, 80.0f, 120.0f}};
+
+/// Random rays from anywhere in `box`: half towards anywhere in it moved `drop` metres down, half
+/// aimed at random points of random triangles; some short, some with unit directions.
+inline std::vector<Ray> cityRays(const std::vector<Triangle>& tris, const Bounds3f& box, float drop, int count,
+                                 uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_int_distribution<size_t> pick(0, tris.size() - 1);
+    const Vec3f e = box.extent();
+    auto anywhere = [&] { return Vec3f{box.lo.x + e.x * unit(rng), box.lo.y + e.y * unit(rng), box.lo.z + e.z * unit(rng)}; };
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        const Vec3f o = anywhere();
+        Vec3f target = anywhere();
+        target.y -= drop;
+        if (i % 2) {
+            const Triangle& t = tris[pick(rng)];
+            float a = unit(rng), b = unit(rng);
+            if (a + b > 1.0f) {
+                a = 1.0f - a;
+                b = 1.0f - b;
+            }
+            target = t.p0 + (t.p1 - t.p0) * a + (t.p2 - t.p0) * b;
+        }
+        Ray ray{o, target - o};
+        if (i % 7 == 0) ray.tmax = 0.5f + unit(rng);   // some short rays
+        if (i % 11 == 0) ray.dir = normalize(ray.dir);
+        rays.push_back(ray);
+    }
+    return rays;
+}
+
+/// The closest hit among all triangles, tested one by one (the reference for the BVHs).
+inline Hit bruteForce(const std::vector<Triangle>& tris, Ray ray) {
+    const WatertightRay wr(ray);
+    Hit hit;
+    for (uint32_t i = 0; i < tris.size(); ++i) {
+        float t, u, v;
+        if (intersectTriangle(tris[i], ray, wr, t, u, v)) {
+            hit = {i, t, u, v};
+            ray.tmax = t;
+        }
+    }
+    return hit;
 }
 
 } // namespace urbis::test

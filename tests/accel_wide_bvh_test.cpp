@@ -13,9 +13,9 @@
 #include <tbb/parallel_for.h>
 
 #include <cfloat>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <random>
 
 using namespace urbis;
 
@@ -91,49 +91,6 @@ void expectWellFormed(const WideBvh& bvh, const std::vector<Bounds3f>& primBound
     EXPECT_LT(maxDepth, 64u);
 }
 
-/// Random rays through `box`: half from anywhere in it towards anywhere, half aimed at random
-/// triangles; some short.
-std::vector<Ray> makeRays(const std::vector<Triangle>& tris, const Bounds3f& box, int count, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    std::uniform_int_distribution<size_t> pick(0, tris.size() - 1);
-    auto anywhere = [&] {
-        const Vec3f e = box.extent();
-        return Vec3f{box.lo.x + e.x * unit(rng), box.lo.y + e.y * unit(rng), box.lo.z + e.z * unit(rng)};
-    };
-    std::vector<Ray> rays;
-    for (int i = 0; i < count; ++i) {
-        const Vec3f o = anywhere();
-        Vec3f target = anywhere();
-        if (i % 2) {
-            const Triangle& t = tris[pick(rng)];
-            float a = unit(rng), b = unit(rng);
-            if (a + b > 1.0f) {
-                a = 1.0f - a;
-                b = 1.0f - b;
-            }
-            target = t.p0 + (t.p1 - t.p0) * a + (t.p2 - t.p0) * b;
-        }
-        Ray ray{o, target - o};
-        if (i % 7 == 0) ray.tmax = 0.5f + unit(rng);
-        rays.push_back(ray);
-    }
-    return rays;
-}
-
-Hit bruteForce(const std::vector<Triangle>& tris, Ray ray) {
-    const WatertightRay wr(ray);
-    Hit hit;
-    for (uint32_t i = 0; i < tris.size(); ++i) {
-        float t, u, v;
-        if (intersectTriangle(tris[i], ray, wr, t, u, v)) {
-            hit = {i, t, u, v};
-            ray.tmax = t;
-        }
-    }
-    return hit;
-}
-
 /// The triangles in the wide BVH's leaf order.
 std::vector<Triangle> reorder(const std::vector<Triangle>& tris, const WideBvh& bvh) {
     std::vector<Triangle> sorted(tris.size());
@@ -150,9 +107,16 @@ std::vector<Triangle> sanFrancisco() {
     return meshCity(importOsm(path, ImportOptions{}), options).mesh.triangles;
 }
 
+/// Whether two distances agree: equal, or within 1e-6 relative, since a triangle that lies in a face
+/// of its box may be found a few ulps nearer than the box is entered and then be culled by one tree
+/// and not by another (or by brute force), as it can be in the 4-wide BVH.
+bool sameDistance(const Hit& a, const Hit& b) {
+    return a.valid() == b.valid() && (!a.valid() || std::fabs(a.t - b.t) <= 1e-6f * b.t);
+}
+
 /// Traces `rays` through the wide BVH with every lane test this CPU has and expects the same hits,
-/// bit for bit, and the closest hit and any-hit answers of the checked 4-wide BVH (same distance;
-/// the same triangle unless two tie at that distance, on a shared edge). `bruteForceEvery`-th ray
+/// bit for bit, and the closest hit and any-hit answers of the checked 4-wide BVH (sameDistance; the
+/// same triangle unless two tie at that distance, on a shared edge). Every `bruteForceEvery`-th ray
 /// is also checked against brute force. Returns the number of hits.
 size_t expectSameHits(const std::vector<Triangle>& tris, const std::vector<Ray>& rays, size_t bruteForceEvery) {
     const std::vector<Bounds3f> bounds = test::triangleBounds(tris);
@@ -161,7 +125,7 @@ size_t expectSameHits(const std::vector<Triangle>& tris, const std::vector<Ray>&
     const std::vector<Triangle> narrowTris = test::reorder(tris, narrow), wideTris = reorder(tris, wide);
     const TriangleSceneView narrowView{narrow.nodes.data(), narrowTris.data(), uint32_t(narrowTris.size())};
     const WideTriangleSceneView wideView{wide.nodes.data(), wideTris.data(), uint32_t(wideTris.size())};
-    std::atomic<size_t> hits{0}, tMismatch{0}, primMismatch{0}, anyMismatch{0}, isaMismatch{0}, bruteMismatch{0};
+    std::atomic<size_t> hits{0}, exact{0}, tMismatch{0}, primMismatch{0}, anyMismatch{0}, isaMismatch{0}, bruteMismatch{0};
     tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
         const Hit reference = intersectClosest(narrowView, rays[i]);
         const Hit got = traceWideTriangles(WideIsa::Scalar, wideView, rays[i], false);
@@ -170,20 +134,19 @@ size_t expectSameHits(const std::vector<Triangle>& tris, const std::vector<Ray>&
             if (std::memcmp(&other, &got, sizeof(Hit)) != 0) ++isaMismatch;
             if (traceWideTriangles(isa, wideView, rays[i], true).valid() != got.valid()) ++anyMismatch;
         }
-        if (got.valid() != reference.valid() || (got.valid() && got.t != reference.t)) ++tMismatch;
-        if (got.valid() && got.valid() == reference.valid()) {
+        if (!sameDistance(got, reference)) ++tMismatch;
+        if (got.valid() && reference.valid()) {
             ++hits;
+            exact += got.t == reference.t;
             if (wide.primOrder[got.prim] != narrow.primOrder[reference.prim] && got.t != reference.t) ++primMismatch;
         }
-        if (i % bruteForceEvery == 0) {
-            const Hit brute = bruteForce(tris, rays[i]);
-            if (brute.valid() != got.valid() || (brute.valid() && brute.t != got.t)) ++bruteMismatch;
-        }
+        if (i % bruteForceEvery == 0 && !sameDistance(got, test::bruteForce(tris, rays[i]))) ++bruteMismatch;
     });
     EXPECT_EQ(isaMismatch, 0u);
     EXPECT_EQ(anyMismatch, 0u);
     EXPECT_EQ(tMismatch, 0u);
-    EXPECT_EQ(primMismatch, 0u);
+    EXPECT_LE(primMismatch, hits / 10000) << "different triangles only at (almost) equal distances";
+    EXPECT_GE(exact, hits - hits / 10000) << "distances equal but for a few in 10^4";
     EXPECT_EQ(bruteMismatch, 0u);
     return hits;
 }
@@ -259,7 +222,7 @@ TEST(WideBvhTraverse, LaneTestsAgreeBitForBit) {
     const WideBvh bvh = buildWideBvh(test::triangleBounds(tris));
     Bounds3f box;
     for (const Triangle& t : tris) box.extend(t.p0);
-    std::vector<Ray> rays = makeRays(tris, box, 2000, 4);
+    std::vector<Ray> rays = test::cityRays(tris, box, 20.0f, 2000, 4);
     // Along the axes too: direction components of zero, whose inverses are +-FLT_MAX.
     for (size_t i = 0; i < rays.size(); i += 5) rays[i].dir = {i % 2 ? 0.0f : -0.0f, -1.0f, 0.0f};
     for (size_t i = 1; i < rays.size(); i += 5) rays[i].dir = {i % 3 ? 1.0f : -1.0f, 0.0f, 0.0f};
@@ -285,8 +248,7 @@ TEST(WideBvhTraverse, LaneTestsAgreeBitForBit) {
 
 TEST(WideBvhTraverse, ClosestHitsEqualBruteForceOnAGeneratedCity) {
     const std::vector<Triangle> tris = test::makeCityScene(5);
-    Bounds3f box{{-120.0f, 0.1f, -120.0f}, {120.0f, 80.0f, 120.0f}};
-    const std::vector<Ray> rays = makeRays(tris, box, 100000, 9);
+    const std::vector<Ray> rays = test::cityRays(tris, test::kCitySceneRayBox, 20.0f, 100000, 9);
     EXPECT_GT(expectSameHits(tris, rays, 2), 50000u);
 }
 
@@ -301,6 +263,6 @@ TEST(WideBvhTraverse, ClosestHitsEqualOnSanFrancisco) {
     }
     box.hi.y = 2.0f * box.hi.y;
     // 100k rays against the 4-wide BVH (itself checked against brute force), one in 50 against brute force too.
-    const std::vector<Ray> rays = makeRays(tris, box, 100000, 21);
+    const std::vector<Ray> rays = test::cityRays(tris, box, 0.25f * box.extent().y, 100000, 21);
     EXPECT_GT(expectSameHits(tris, rays, 50), 30000u);
 }

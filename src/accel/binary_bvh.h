@@ -35,4 +35,25 @@ BinaryBvh buildBinaryBvh(const std::vector<Bounds3f>& primBounds, const BvhBuild
 /// indices to lanes[0, count) and returns count.
 int gatherLanes(const std::vector<BinaryNode>& binary, uint32_t top, uint32_t* lanes, int maxLanes);
 
+/// Collapses the binary tree into wide nodes, depth first so that each subtree's nodes lie together:
+/// for each wide node `at` (0, the root, gets at most rootLanes lanes), fill(uint32_t at, const
+/// uint32_t* lanes, int count, uint32_t* children) writes it from binary nodes lanes[0, count)
+/// (gatherLanes) and sets children[l], for each interior lane l, to the index of its child's node.
+template <int Width, typename Fill>
+void collapseDepthFirst(const std::vector<BinaryNode>& binary, int rootLanes, Fill&& fill) {
+    struct Pending {
+        uint32_t wide, binary;
+    };
+    std::vector<Pending> stack{{0, 0}};
+    while (!stack.empty()) {
+        const Pending p = stack.back();
+        stack.pop_back();
+        uint32_t lanes[Width], children[Width];
+        const int count = gatherLanes(binary, p.binary, lanes, p.wide == 0 ? rootLanes : Width);
+        fill(p.wide, static_cast<const uint32_t*>(lanes), count, static_cast<uint32_t*>(children));
+        for (int l = count - 1; l >= 0; --l)
+            if (!binary[lanes[l]].isLeaf()) stack.push_back({children[l], lanes[l]});
+    }
+}
+
 } // namespace urbis

@@ -335,35 +335,22 @@ BvhNode emptyWideNode() {
 /// The root takes at most `rootLanes` children (lanes left free for attachLeafAtRoot).
 std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLanes) {
     std::vector<BvhNode> wide{emptyWideNode()};
-    struct Pending {
-        uint32_t wide, binary;
-    };
-    std::vector<Pending> stack{{0, 0}};
-    while (!stack.empty()) {
-        const Pending p = stack.back();
-        stack.pop_back();
-        uint32_t lanes[kBvhWidth];
-        const int count = gatherLanes(binary, p.binary, lanes, p.wide == 0 ? rootLanes : kBvhWidth);
-        Pending children[kBvhWidth];
-        int childCount = 0;
+    collapseDepthFirst<kBvhWidth>(binary, rootLanes, [&](uint32_t at, const uint32_t* lanes, int count, uint32_t* children) {
         for (int l = 0; l < count; ++l) {
             const BinaryNode& n = binary[lanes[l]];
-            BvhNode& w = wide[p.wide];
+            if (!n.isLeaf()) {
+                children[l] = static_cast<uint32_t>(wide.size());
+                wide.push_back(emptyWideNode());
+            }
+            BvhNode& w = wide[at];
             for (int axis = 0; axis < 3; ++axis) {
                 w.bounds[axis][l] = n.box.lo[axis];
                 w.bounds[axis + 3][l] = n.box.hi[axis];
             }
-            if (n.isLeaf()) {
-                w.child[l] = n.first;
-                w.primCount[l] = n.primCount;
-            } else {
-                w.child[l] = static_cast<uint32_t>(wide.size());
-                children[childCount++] = {w.child[l], lanes[l]};
-                wide.push_back(emptyWideNode());   // invalidates w
-            }
+            w.child[l] = n.isLeaf() ? n.first : children[l];
+            w.primCount[l] = n.primCount;
         }
-        for (int c = childCount - 1; c >= 0; --c) stack.push_back(children[c]);
-    }
+    });
     return wide;
 }
 

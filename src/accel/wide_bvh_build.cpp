@@ -1,6 +1,7 @@
 #include "accel/wide_bvh_build.h"
 
 #include "accel/binary_bvh.h"
+#include "accel/wide_bvh_traverse.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,28 +62,19 @@ WideBvh buildWideBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOpti
     binaryOptions.maxLeafSize = std::min(options.maxLeafSize, 15u);   // a leaf's count has four bits
     const BinaryBvh binary = buildBinaryBvh(primBounds, binaryOptions, primCosts);
     wide.primOrder.reserve(binary.primOrder.size());
-    struct Pending {
-        uint32_t wide, binary;
-    };
-    std::vector<Pending> stack{{0, 0}};
-    while (!stack.empty()) {
-        const Pending p = stack.back();
-        stack.pop_back();
-        uint32_t lanes[kWideBvhWidth];
-        const int count = gatherLanes(binary.nodes, p.binary, lanes, kWideBvhWidth);
+    // A node's interior children are allocated together (childBase), its leaves' primitives likewise.
+    collapseDepthFirst<kWideBvhWidth>(binary.nodes, kWideBvhWidth, [&](uint32_t at, const uint32_t* lanes, int count,
+                                                                      uint32_t* children) {
         Bounds3f boxes[kWideBvhWidth];
         WideBvhNode node = emptyNode();
         node.childBase = uint32_t(wide.nodes.size());
         node.primBase = uint32_t(wide.primOrder.size());
-        Pending children[kWideBvhWidth];
-        int childCount = 0;
         for (int l = 0; l < count; ++l) {
             const BinaryNode& n = binary.nodes[lanes[l]];
             boxes[l] = n.box;
             if (!n.isLeaf()) {
+                children[l] = node.childBase + bitCount8(node.innerMask);
                 node.innerMask |= uint8_t(1u << l);
-                children[childCount] = {node.childBase + uint32_t(childCount), lanes[l]};
-                ++childCount;
                 continue;
             }
             bool costly = false;
@@ -93,11 +85,9 @@ WideBvh buildWideBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOpti
             node.leafInfo[l] = uint8_t(n.primCount | (costly ? kWideCostlyLeaf : 0u));
         }
         quantise(node, boxes, count);
-        wide.nodes[p.wide] = node;
-        wide.nodes.resize(wide.nodes.size() + childCount);
-        // Depth first: each subtree lies together, after its siblings.
-        for (int c = childCount - 1; c >= 0; --c) stack.push_back(children[c]);
-    }
+        wide.nodes[at] = node;
+        wide.nodes.resize(wide.nodes.size() + bitCount8(node.innerMask));
+    });
     return wide;
 }
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "accel/wide_bvh_traverse.h"
-#include "geometry/triangle_intersect.h"
+#include "geometry/triangle_scene.h"
 #include "scene/triangle_scene_view.h"
 
 #include <cstdint>
@@ -17,13 +17,8 @@ URBIS_HD inline Hit traceWideTriangles(const WideTriangleSceneView& view, Ray ra
     const BvhRay br(ray);
     const WatertightRay wr(ray, br.invDir);
     Hit hit;
-    traverseWideBvh<Lanes>(view.nodes, br, ray, hit, anyHit, [&](uint32_t prim, Ray& r, Hit& h) {
-        float t, u, v;
-        if (!intersectTriangle(view.triangles[prim], r, wr, t, u, v)) return false;
-        h = {prim, t, u, v};
-        r.tmax = t;
-        return true;
-    });
+    traverseWideBvh<Lanes>(view.nodes, br, ray, hit, anyHit,
+                           [&](uint32_t prim, Ray& r, Hit& h) { return hitTriangle(view.triangles, wr, prim, r, h); });
     return hit;
 }
 
