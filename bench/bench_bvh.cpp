@@ -46,6 +46,13 @@ std::vector<Bounds3f> boundsOf(const std::vector<Triangle>& tris) {
     return bounds;
 }
 
+/// The triangles in a BVH's leaf order.
+std::vector<Triangle> inLeafOrder(const std::vector<Triangle>& tris, const std::vector<uint32_t>& primOrder) {
+    std::vector<Triangle> sorted(tris.size());
+    for (size_t i = 0; i < sorted.size(); ++i) sorted[i] = tris[primOrder[i]];
+    return sorted;
+}
+
 /// Primary rays of a pinhole camera above the city, looking across it and down.
 std::vector<Ray> primaryRays(const Camera& camera, int width, int height) {
     std::vector<Ray> rays;
@@ -146,18 +153,10 @@ struct BenchData {
     std::vector<Triangle> triangles = benchTriangles(description);
     std::vector<Bounds3f> bounds = boundsOf(triangles);
     Bvh bvh = buildBvh(bounds);
-    std::vector<Triangle> sorted = [this] {
-        std::vector<Triangle> s(triangles.size());
-        for (size_t i = 0; i < s.size(); ++i) s[i] = triangles[bvh.primOrder[i]];
-        return s;
-    }();
+    std::vector<Triangle> sorted = inLeafOrder(triangles, bvh.primOrder);
     TriangleSceneView view{bvh.nodes.data(), sorted.data(), uint32_t(sorted.size())};
     WideBvh wide = buildWideBvh(bounds);
-    std::vector<Triangle> wideSorted = [this] {
-        std::vector<Triangle> s(triangles.size());
-        for (size_t i = 0; i < s.size(); ++i) s[i] = triangles[wide.primOrder[i]];
-        return s;
-    }();
+    std::vector<Triangle> wideSorted = inLeafOrder(triangles, wide.primOrder);
     WideTriangleSceneView wideView{wide.nodes.data(), wideSorted.data(), uint32_t(wideSorted.size())};
     WideIsa isa = hostWideIsa();
     std::vector<Ray> primary = primaryRays(frameCity(sceneBounds(triangles), 50.0f, 1024.0f / 768.0f), 1024, 768);

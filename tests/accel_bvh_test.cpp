@@ -6,7 +6,6 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include <cfloat>
 #include <cstring>
 #include <random>
 
@@ -18,18 +17,11 @@ namespace {
 /// leaves not over the size limit, depth under 64 levels.
 void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, uint32_t maxLeafSize) {
     std::vector<int> seen(primBounds.size(), 0);
-    auto inside = [](const Bounds3f& in, const Bounds3f& out) {
-        return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.lo.z >= out.lo.z && in.hi.x <= out.hi.x &&
-               in.hi.y <= out.hi.y && in.hi.z <= out.hi.z;
-    };
     struct Item {
         uint32_t node, depth;
         Bounds3f box;
     };
-    Bounds3f everything;
-    everything.extend(Vec3f{-FLT_MAX, -FLT_MAX, -FLT_MAX});
-    everything.extend(Vec3f{FLT_MAX, FLT_MAX, FLT_MAX});
-    std::vector<Item> stack{{0, 1, everything}};
+    std::vector<Item> stack{{0, 1, test::everywhere()}};
     uint32_t maxDepth = 0;
     while (!stack.empty()) {
         const Item it = stack.back();
@@ -43,7 +35,7 @@ void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, u
                 EXPECT_EQ(n.primCount[l], 0u);
                 continue;
             }
-            EXPECT_TRUE(inside(box, it.box));
+            EXPECT_TRUE(test::inside(box, it.box));
             if (n.primCount[l] == 0) {
                 stack.push_back({n.child[l], it.depth + 1, box});
                 continue;
@@ -51,7 +43,7 @@ void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, u
             EXPECT_LE(n.leafSize(l), maxLeafSize);
             for (uint32_t i = n.child[l]; i < n.child[l] + n.leafSize(l); ++i) {
                 ++seen[i];
-                EXPECT_TRUE(inside(primBounds[bvh.primOrder[i]], box));
+                EXPECT_TRUE(test::inside(primBounds[bvh.primOrder[i]], box));
             }
         }
     }

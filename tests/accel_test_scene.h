@@ -7,6 +7,7 @@
 #include "geometry/triangle_intersect.h"
 #include "scene/triangle.h"
 
+#include <cfloat>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -59,12 +60,22 @@ inline std::vector<Bounds3f> triangleBounds(const std::vector<Triangle>& tris) {
     return bounds;
 }
 
-/// The triangles in the BVH's leaf order.
-inline std::vector<Triangle> reorder(const std::vector<Triangle>& tris, const Bvh& bvh) {
+/// The triangles in the leaf order of a Bvh or a WideBvh.
+template <typename Tree>
+std::vector<Triangle> reorder(const std::vector<Triangle>& tris, const Tree& bvh) {
     std::vector<Triangle> sorted(tris.size());
     for (size_t i = 0; i < tris.size(); ++i) sorted[i] = tris[bvh.primOrder[i]];
     return sorted;
 }
+
+/// Whether box `in` lies inside box `out`.
+inline bool inside(const Bounds3f& in, const Bounds3f& out) {
+    return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.lo.z >= out.lo.z && in.hi.x <= out.hi.x &&
+           in.hi.y <= out.hi.y && in.hi.z <= out.hi.z;
+}
+
+/// The box of all finite points: what a root's box must lie inside.
+inline Bounds3f everywhere() { return {{-FLT_MAX, -FLT_MAX, -FLT_MAX}, {FLT_MAX, FLT_MAX, FLT_MAX}}; }
 
 /// Where makeCityScene's rays start (and end): around its buildings and up to twice their height.
 inline const Bounds3f kCitySceneRayBox{{-120.0f, 0.1f, -120.0f}, {120.0f, 80.0f, 120.0f}};

@@ -12,7 +12,6 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -41,11 +40,6 @@ unsigned lanesWith(WideIsa isa, const WideBvhNode& node, const BvhRay& r, const 
     return WideLanesScalar::test(node, r, ray.tmin, ray.tmax, tEntry);
 }
 
-bool inside(const Bounds3f& in, const Bounds3f& out) {
-    return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.lo.z >= out.lo.z && in.hi.x <= out.hi.x &&
-           in.hi.y <= out.hi.y && in.hi.z <= out.hi.z;
-}
-
 /// Every primitive in exactly one leaf, inside its leaf's decoded box and inside every decoded box
 /// above it (the quantisation is conservative; a child's decoded box, on its own grid, may reach
 /// past its parent's); leaves within the size limit; depth under 64.
@@ -55,10 +49,7 @@ void expectWellFormed(const WideBvh& bvh, const std::vector<Bounds3f>& primBound
         uint32_t node, depth;
         Bounds3f box;
     };
-    Bounds3f everything;
-    everything.extend(Vec3f{-FLT_MAX, -FLT_MAX, -FLT_MAX});
-    everything.extend(Vec3f{FLT_MAX, FLT_MAX, FLT_MAX});
-    std::vector<Item> stack{{0, 1, everything}};
+    std::vector<Item> stack{{0, 1, test::everywhere()}};
     uint32_t maxDepth = 0;
     while (!stack.empty()) {
         const Item it = stack.back();
@@ -82,20 +73,13 @@ void expectWellFormed(const WideBvh& bvh, const std::vector<Bounds3f>& primBound
             EXPECT_LE(n.leafSize(l), maxLeafSize);
             for (uint32_t i = slot; i < slot + n.leafSize(l); ++i) {
                 ++seen[bvh.primOrder[i]];
-                EXPECT_TRUE(inside(primBounds[bvh.primOrder[i]], within)) << "prim " << bvh.primOrder[i];
+                EXPECT_TRUE(test::inside(primBounds[bvh.primOrder[i]], within)) << "prim " << bvh.primOrder[i];
             }
             slot += n.leafSize(l);
         }
     }
     for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << i;
     EXPECT_LT(maxDepth, 64u);
-}
-
-/// The triangles in the wide BVH's leaf order.
-std::vector<Triangle> reorder(const std::vector<Triangle>& tris, const WideBvh& bvh) {
-    std::vector<Triangle> sorted(tris.size());
-    for (size_t i = 0; i < tris.size(); ++i) sorted[i] = tris[bvh.primOrder[i]];
-    return sorted;
 }
 
 /// Downtown San Francisco as the benchmarks mesh it (plain walls), or nothing without the shared data.
@@ -122,7 +106,7 @@ size_t expectSameHits(const std::vector<Triangle>& tris, const std::vector<Ray>&
     const std::vector<Bounds3f> bounds = test::triangleBounds(tris);
     const Bvh narrow = buildBvh(bounds);
     const WideBvh wide = buildWideBvh(bounds);
-    const std::vector<Triangle> narrowTris = test::reorder(tris, narrow), wideTris = reorder(tris, wide);
+    const std::vector<Triangle> narrowTris = test::reorder(tris, narrow), wideTris = test::reorder(tris, wide);
     const TriangleSceneView narrowView{narrow.nodes.data(), narrowTris.data(), uint32_t(narrowTris.size())};
     const WideTriangleSceneView wideView{wide.nodes.data(), wideTris.data(), uint32_t(wideTris.size())};
     std::atomic<size_t> hits{0}, exact{0}, tMismatch{0}, primMismatch{0}, anyMismatch{0}, isaMismatch{0}, bruteMismatch{0};
