@@ -246,7 +246,7 @@ TEST(WideBvhTraverse, ClosestHitsEqualOnSanFrancisco) {
         box.extend(t.p2);
     }
     box.hi.y = 2.0f * box.hi.y;
-    // 100k rays against the 4-wide BVH (itself checked against brute force), one in 50 against brute force too.
+    // 100k rays against the 4-wide BVH (itself checked against brute force), one in 200 against brute force too.
     const std::vector<Ray> rays = test::cityRays(tris, box, 0.25f * box.extent().y, 100000, 21);
-    EXPECT_GT(expectSameHits(tris, rays, 50), 30000u);
+    EXPECT_GT(expectSameHits(tris, rays, 200), 30000u);
 }
