@@ -19,11 +19,12 @@ struct WideBvh {
 };
 
 /// Builds an 8-wide compressed BVH over primitive bounds in world space: buildBvh's binary tree
-/// (binned SAH, `primCosts` as there, a costly primitive alone in its leaf), collapsed by opening, in
-/// each wide node, the interior child whose opening saves the most SAH cost (its area, the cost of
-/// the node it stands for) until there are kWideBvhWidth lanes; then the child boxes are quantised
-/// against each node's box (WideBvhNode). Deterministic for any thread count. The tree keeps the
-/// binary tree's depth bound (under 64 levels). An empty input gives one empty node.
+/// (binned SAH, whose leaves weigh `primCosts` as there, a costly primitive alone in its leaf, marked
+/// kWideCostlyLeaf), collapsed as buildBvh's (collapseDepthFirst: the interior lane of largest area
+/// opened until there are kWideBvhWidth lanes); then each child box is quantised conservatively
+/// against its node's box (WideBvhNode). Deterministic for any thread count. The tree keeps the
+/// binary tree's depth bound (under 64 levels). Leaves hold at most 15 primitives (maxLeafSize is
+/// capped there). An empty input gives one empty node.
 WideBvh buildWideBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options = {},
                      const std::vector<uint32_t>& primCosts = {});
 
