@@ -17,18 +17,10 @@ namespace {
 /// leaves not over the size limit, depth under 64 levels.
 void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, uint32_t maxLeafSize) {
     std::vector<int> seen(primBounds.size(), 0);
-    struct Item {
-        uint32_t node, depth;
-        Bounds3f box;
-    };
-    std::vector<Item> stack{{0, 1, test::everywhere()}};
-    uint32_t maxDepth = 0;
-    while (!stack.empty()) {
-        const Item it = stack.back();
-        stack.pop_back();
+    test::TreeWalk walk;
+    for (test::TreeWalk::Item it; walk.next(it);) {
         ASSERT_LT(it.node, bvh.nodes.size());
         const BvhNode& n = bvh.nodes[it.node];
-        maxDepth = std::max(maxDepth, it.depth);
         for (int l = 0; l < kBvhWidth; ++l) {
             const Bounds3f box = n.box(l);
             if (box.empty()) {
@@ -37,7 +29,7 @@ void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, u
             }
             EXPECT_TRUE(test::inside(box, it.box));
             if (n.primCount[l] == 0) {
-                stack.push_back({n.child[l], it.depth + 1, box});
+                walk.push(n.child[l], it, box);
                 continue;
             }
             EXPECT_LE(n.leafSize(l), maxLeafSize);
@@ -48,7 +40,7 @@ void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, u
         }
     }
     for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << i;
-    EXPECT_LT(maxDepth, 64u);
+    EXPECT_LT(walk.maxDepth, 64u);
 }
 
 } // namespace

@@ -77,6 +77,28 @@ inline bool inside(const Bounds3f& in, const Bounds3f& out) {
 /// The box of all finite points: what a root's box must lie inside.
 inline Bounds3f everywhere() { return {{-FLT_MAX, -FLT_MAX, -FLT_MAX}, {FLT_MAX, FLT_MAX, FLT_MAX}}; }
 
+/// A depth-first walk over a BVH's nodes from the root (node 0), each with its depth (the root's is 1)
+/// and the box its parent gave it: what the shape tests of both BVHs step through.
+struct TreeWalk {
+    struct Item {
+        uint32_t node, depth;
+        Bounds3f box;
+    };
+    std::vector<Item> stack{{0, 1, everywhere()}};
+    uint32_t maxDepth = 0;
+
+    /// Takes the next node into `it`; false when the walk is over.
+    bool next(Item& it) {
+        if (stack.empty()) return false;
+        it = stack.back();
+        stack.pop_back();
+        maxDepth = maxDepth > it.depth ? maxDepth : it.depth;
+        return true;
+    }
+    /// Queues node `child` of `parent`, whose box it must lie in.
+    void push(uint32_t child, const Item& parent, const Bounds3f& box) { stack.push_back({child, parent.depth + 1, box}); }
+};
+
 /// Where makeCityScene's rays start (and end): around its buildings and up to twice their height.
 inline const Bounds3f kCitySceneRayBox{{-120.0f, 0.1f, -120.0f}, {120.0f, 80.0f, 120.0f}};
 

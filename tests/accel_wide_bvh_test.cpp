@@ -45,18 +45,10 @@ unsigned lanesWith(WideIsa isa, const WideBvhNode& node, const BvhRay& r, const 
 /// past its parent's); leaves within the size limit; depth under 64.
 void expectWellFormed(const WideBvh& bvh, const std::vector<Bounds3f>& primBounds, uint32_t maxLeafSize) {
     std::vector<int> seen(primBounds.size(), 0);
-    struct Item {
-        uint32_t node, depth;
-        Bounds3f box;
-    };
-    std::vector<Item> stack{{0, 1, test::everywhere()}};
-    uint32_t maxDepth = 0;
-    while (!stack.empty()) {
-        const Item it = stack.back();
-        stack.pop_back();
+    test::TreeWalk walk;
+    for (test::TreeWalk::Item it; walk.next(it);) {
         ASSERT_LT(it.node, bvh.nodes.size());
         const WideBvhNode& n = bvh.nodes[it.node];
-        maxDepth = std::max(maxDepth, it.depth);
         uint32_t slot = n.primBase, child = n.childBase;
         for (int l = 0; l < kWideBvhWidth; ++l) {
             const Bounds3f box = decodedBox(n, l);
@@ -67,7 +59,7 @@ void expectWellFormed(const WideBvh& bvh, const std::vector<Bounds3f>& primBound
             }
             const Bounds3f within{vmax(box.lo, it.box.lo), vmin(box.hi, it.box.hi)};
             if (inner) {
-                stack.push_back({child++, it.depth + 1, within});
+                walk.push(child++, it, within);
                 continue;
             }
             EXPECT_LE(n.leafSize(l), maxLeafSize);
@@ -79,7 +71,7 @@ void expectWellFormed(const WideBvh& bvh, const std::vector<Bounds3f>& primBound
         }
     }
     for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << i;
-    EXPECT_LT(maxDepth, 64u);
+    EXPECT_LT(walk.maxDepth, 64u);
 }
 
 /// Downtown San Francisco as the benchmarks mesh it (plain walls), or nothing without the shared data.
