@@ -1,8 +1,10 @@
 // BVH build speed and closest-hit rays/s of urbis against Embree 3 on the same triangles
 // and rays. Run: build/urbis_bench --benchmark_counters_tabular=true
 #include "accel/bvh_build.h"
+#include "accel/wide_bvh_build.h"
 #include "bench_scene.h"
 #include "geometry/triangle_scene.h"
+#include "geometry/wide_triangle_scene.h"
 #include "scene/camera_framing.h"
 
 #include <benchmark/benchmark.h>
@@ -42,6 +44,13 @@ std::vector<Bounds3f> boundsOf(const std::vector<Triangle>& tris) {
         bounds[i].extend(tris[i].p2);
     });
     return bounds;
+}
+
+/// The triangles in a BVH's leaf order.
+std::vector<Triangle> inLeafOrder(const std::vector<Triangle>& tris, const std::vector<uint32_t>& primOrder) {
+    std::vector<Triangle> sorted(tris.size());
+    for (size_t i = 0; i < sorted.size(); ++i) sorted[i] = tris[primOrder[i]];
+    return sorted;
 }
 
 /// Primary rays of a pinhole camera above the city, looking across it and down.
@@ -144,12 +153,12 @@ struct BenchData {
     std::vector<Triangle> triangles = benchTriangles(description);
     std::vector<Bounds3f> bounds = boundsOf(triangles);
     Bvh bvh = buildBvh(bounds);
-    std::vector<Triangle> sorted = [this] {
-        std::vector<Triangle> s(triangles.size());
-        for (size_t i = 0; i < s.size(); ++i) s[i] = triangles[bvh.primOrder[i]];
-        return s;
-    }();
+    std::vector<Triangle> sorted = inLeafOrder(triangles, bvh.primOrder);
     TriangleSceneView view{bvh.nodes.data(), sorted.data(), uint32_t(sorted.size())};
+    WideBvh wide = buildWideBvh(bounds);
+    std::vector<Triangle> wideSorted = inLeafOrder(triangles, wide.primOrder);
+    WideTriangleSceneView wideView{wide.nodes.data(), wideSorted.data(), uint32_t(wideSorted.size())};
+    WideIsa isa = hostWideIsa();
     std::vector<Ray> primary = primaryRays(frameCity(sceneBounds(triangles), 50.0f, 1024.0f / 768.0f), 1024, 768);
     std::vector<Ray> diffuse = diffuseRays(view, primary);
 #if URBIS_HAVE_EMBREE
@@ -164,7 +173,7 @@ const BenchData& data() {
 }
 
 enum class RayKind { Primary, Diffuse };
-enum class Tracer { Urbis, EmbreeHigh, EmbreeMedium };
+enum class Tracer { Urbis, UrbisWide, EmbreeHigh, EmbreeMedium };
 
 /// Traces rays [b, e) and returns how many hit (also keeps the work from being optimised away).
 template <Tracer T>
@@ -173,6 +182,8 @@ size_t traceRange(const BenchData& d, const std::vector<Ray>& rays, size_t b, si
     for (size_t i = b; i < e; ++i) {
         if constexpr (T == Tracer::Urbis) {
             hits += intersectClosest(d.view, rays[i]).valid();
+        } else if constexpr (T == Tracer::UrbisWide) {
+            hits += traceWideTriangles(d.isa, d.wideView, rays[i], false).valid();
         } else {
 #if URBIS_HAVE_EMBREE
             const EmbreeScene& embree = T == Tracer::EmbreeHigh ? d.embreeHigh : d.embreeMedium;
@@ -207,17 +218,20 @@ void BM_Trace(benchmark::State& state, RayKind kind) {
     state.counters["rays"] = double(rays.size());
 }
 
+/// Builds of urbis's BVH (Wide: the 8-wide compressed one), with its size.
+template <bool Wide>
 void BM_BuildUrbis(benchmark::State& state) {
     const BenchData& d = data();
     for (auto _ : state) {
-        Bvh bvh = buildBvh(d.bounds);
-        benchmark::DoNotOptimize(bvh.nodes.data());
+        if constexpr (Wide) benchmark::DoNotOptimize(buildWideBvh(d.bounds).nodes.data());
+        else benchmark::DoNotOptimize(buildBvh(d.bounds).nodes.data());
     }
     state.counters["triangles_per_second"] =
         benchmark::Counter(double(d.triangles.size()) * double(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["triangles"] = double(d.triangles.size());
-    state.counters["nodes"] = double(d.bvh.nodes.size());
-    state.counters["sah_cost"] = sahCost(d.bvh);
+    state.counters["nodes"] = double(Wide ? d.wide.nodes.size() : d.bvh.nodes.size());
+    state.counters["node_bytes"] = double(Wide ? d.wide.nodes.size() * sizeof(WideBvhNode) : d.bvh.nodes.size() * sizeof(BvhNode));
+    if (!Wide) state.counters["sah_cost"] = sahCost(d.bvh);
 }
 
 #if URBIS_HAVE_EMBREE
@@ -235,7 +249,8 @@ void BM_BuildEmbree(benchmark::State& state, RTCBuildQuality quality) {
 const int kAllCores = int(std::max(1u, std::thread::hardware_concurrency()));
 
 void registerAll() {
-    benchmark::RegisterBenchmark("Build/urbis", BM_BuildUrbis)->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark("Build/urbis", BM_BuildUrbis<false>)->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark("Build/urbis_wide", BM_BuildUrbis<true>)->Unit(benchmark::kMillisecond)->UseRealTime();
 #if URBIS_HAVE_EMBREE
     benchmark::RegisterBenchmark("Build/embree_high", BM_BuildEmbree, RTC_BUILD_QUALITY_HIGH)
         ->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -247,6 +262,8 @@ void registerAll() {
         for (int threads : {1, kAllCores}) {
             const std::string suffix = k + "/threads:" + std::to_string(threads);
             benchmark::RegisterBenchmark(("Trace/urbis/" + suffix).c_str(), BM_Trace<Tracer::Urbis>, kind)
+                ->Arg(threads)->Unit(benchmark::kMillisecond)->UseRealTime();
+            benchmark::RegisterBenchmark(("Trace/urbis_wide/" + suffix).c_str(), BM_Trace<Tracer::UrbisWide>, kind)
                 ->Arg(threads)->Unit(benchmark::kMillisecond)->UseRealTime();
 #if URBIS_HAVE_EMBREE
             benchmark::RegisterBenchmark(("Trace/embree_high/" + suffix).c_str(), BM_Trace<Tracer::EmbreeHigh>, kind)
@@ -276,12 +293,14 @@ public:
         std::printf("\nscene: %s\n", data().description.c_str());
         std::printf("urbis / Embree 3 (build quality HIGH and MEDIUM), same triangles and rays, M/s:\n");
         for (const auto& [name, rate] : rates_) {
-            const size_t at = name.find("/urbis");
+            // Names are <what>/<tracer>/<rest>: each urbis tracer against Embree's of the same <what> and <rest>.
+            const size_t at = name.find('/'), end = name.find('/', at + 1);
             const bool spread = name.ends_with("_stddev") || name.ends_with("_cv");
-            if (at == std::string::npos || spread) continue;
-            std::printf("  %-42s urbis %7.2f", name.c_str(), rate * 1e-6);
+            if (at == std::string::npos || spread || name.compare(at + 1, 5, "urbis") != 0) continue;
+            std::printf("  %-47s urbis %7.2f", name.c_str(), rate * 1e-6);
+            const std::string rest = end == std::string::npos ? "" : name.substr(end);
             for (const char* quality : {"high", "medium"}) {
-                auto it = rates_.find(name.substr(0, at) + "/embree_" + quality + name.substr(at + 6));
+                auto it = rates_.find(name.substr(0, at) + "/embree_" + quality + rest);
                 if (it != rates_.end())
                     std::printf("  %s %7.2f (ratio %.2f)", quality, it->second * 1e-6, rate / it->second);
             }

@@ -6,7 +6,6 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include <cfloat>
 #include <cstring>
 #include <random>
 
@@ -18,81 +17,30 @@ namespace {
 /// leaves not over the size limit, depth under 64 levels.
 void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, uint32_t maxLeafSize) {
     std::vector<int> seen(primBounds.size(), 0);
-    auto inside = [](const Bounds3f& in, const Bounds3f& out) {
-        return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.lo.z >= out.lo.z && in.hi.x <= out.hi.x &&
-               in.hi.y <= out.hi.y && in.hi.z <= out.hi.z;
-    };
-    struct Item {
-        uint32_t node, depth;
-        Bounds3f box;
-    };
-    Bounds3f everything;
-    everything.extend(Vec3f{-FLT_MAX, -FLT_MAX, -FLT_MAX});
-    everything.extend(Vec3f{FLT_MAX, FLT_MAX, FLT_MAX});
-    std::vector<Item> stack{{0, 1, everything}};
-    uint32_t maxDepth = 0;
-    while (!stack.empty()) {
-        const Item it = stack.back();
-        stack.pop_back();
+    test::TreeWalk walk;
+    for (test::TreeWalk::Item it; walk.next(it);) {
         ASSERT_LT(it.node, bvh.nodes.size());
         const BvhNode& n = bvh.nodes[it.node];
-        maxDepth = std::max(maxDepth, it.depth);
         for (int l = 0; l < kBvhWidth; ++l) {
             const Bounds3f box = n.box(l);
             if (box.empty()) {
                 EXPECT_EQ(n.primCount[l], 0u);
                 continue;
             }
-            EXPECT_TRUE(inside(box, it.box));
+            EXPECT_TRUE(test::inside(box, it.box));
             if (n.primCount[l] == 0) {
-                stack.push_back({n.child[l], it.depth + 1, box});
+                walk.push(n.child[l], it, box);
                 continue;
             }
             EXPECT_LE(n.leafSize(l), maxLeafSize);
             for (uint32_t i = n.child[l]; i < n.child[l] + n.leafSize(l); ++i) {
                 ++seen[i];
-                EXPECT_TRUE(inside(primBounds[bvh.primOrder[i]], box));
+                EXPECT_TRUE(test::inside(primBounds[bvh.primOrder[i]], box));
             }
         }
     }
     for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << i;
-    EXPECT_LT(maxDepth, 64u);
-}
-
-/// Random rays: half from anywhere towards anywhere, half aimed at random triangles.
-std::vector<Ray> makeRays(const std::vector<Triangle>& tris, int count, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> pos(-120.0f, 120.0f), y(0.1f, 80.0f), unit(0.0f, 1.0f);
-    std::uniform_int_distribution<size_t> pick(0, tris.size() - 1);
-    std::vector<Ray> rays;
-    for (int i = 0; i < count; ++i) {
-        const Vec3f o{pos(rng), y(rng), pos(rng)};
-        Vec3f target{pos(rng), y(rng) - 20.0f, pos(rng)};
-        if (i % 2) {
-            const Triangle& t = tris[pick(rng)];
-            float a = unit(rng), b = unit(rng);
-            if (a + b > 1.0f) { a = 1.0f - a; b = 1.0f - b; }
-            target = t.p0 + (t.p1 - t.p0) * a + (t.p2 - t.p0) * b;
-        }
-        Ray ray{o, target - o};
-        if (i % 7 == 0) ray.tmax = 0.5f + unit(rng);   // some short rays
-        if (i % 11 == 0) ray.dir = normalize(ray.dir);
-        rays.push_back(ray);
-    }
-    return rays;
-}
-
-Hit bruteForce(const std::vector<Triangle>& tris, Ray ray) {
-    const WatertightRay wr(ray);
-    Hit hit;
-    for (uint32_t i = 0; i < tris.size(); ++i) {
-        float t, u, v;
-        if (intersectTriangle(tris[i], ray, wr, t, u, v)) {
-            hit = {i, t, u, v};
-            ray.tmax = t;
-        }
-    }
-    return hit;
+    EXPECT_LT(walk.maxDepth, 64u);
 }
 
 } // namespace
@@ -189,9 +137,9 @@ TEST(BvhTraverse, ClosestHitEqualsBruteForce) {
     const Bvh bvh = buildBvh(test::triangleBounds(tris));
     const std::vector<Triangle> sorted = test::reorder(tris, bvh);
     const TriangleSceneView view{bvh.nodes.data(), sorted.data(), uint32_t(sorted.size())};
-    const std::vector<Ray> rays = makeRays(tris, 100000, 9);
+    const std::vector<Ray> rays = test::cityRays(tris, test::kCitySceneRayBox, 20.0f, 100000, 9);
     std::vector<Hit> expected(rays.size());
-    tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) { expected[i] = bruteForce(sorted, rays[i]); });
+    tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) { expected[i] = test::bruteForce(sorted, rays[i]); });
     int hits = 0, primMismatch = 0, tMismatch = 0, anyMismatch = 0;
     for (size_t i = 0; i < rays.size(); ++i) {
         const Hit got = intersectClosest(view, rays[i]);

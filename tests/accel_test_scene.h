@@ -4,8 +4,10 @@
 
 #include "accel/bvh_build.h"
 #include "accel/bvh_node.h"
+#include "geometry/triangle_intersect.h"
 #include "scene/triangle.h"
 
+#include <cfloat>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -58,11 +60,91 @@ inline std::vector<Bounds3f> triangleBounds(const std::vector<Triangle>& tris) {
     return bounds;
 }
 
-/// The triangles in the BVH's leaf order.
-inline std::vector<Triangle> reorder(const std::vector<Triangle>& tris, const Bvh& bvh) {
+/// The triangles in the leaf order of a Bvh or a WideBvh.
+template <typename Tree>
+std::vector<Triangle> reorder(const std::vector<Triangle>& tris, const Tree& bvh) {
     std::vector<Triangle> sorted(tris.size());
     for (size_t i = 0; i < tris.size(); ++i) sorted[i] = tris[bvh.primOrder[i]];
     return sorted;
+}
+
+/// Whether box `in` lies inside box `out`.
+inline bool inside(const Bounds3f& in, const Bounds3f& out) {
+    return in.lo.x >= out.lo.x && in.lo.y >= out.lo.y && in.lo.z >= out.lo.z && in.hi.x <= out.hi.x &&
+           in.hi.y <= out.hi.y && in.hi.z <= out.hi.z;
+}
+
+/// The box of all finite points: what a root's box must lie inside.
+inline Bounds3f everywhere() { return {{-FLT_MAX, -FLT_MAX, -FLT_MAX}, {FLT_MAX, FLT_MAX, FLT_MAX}}; }
+
+/// A depth-first walk over a BVH's nodes from the root (node 0), each with its depth (the root's is 1)
+/// and the box its parent gave it: what the shape tests of both BVHs step through.
+struct TreeWalk {
+    struct Item {
+        uint32_t node, depth;
+        Bounds3f box;
+    };
+    std::vector<Item> stack{{0, 1, everywhere()}};
+    uint32_t maxDepth = 0;
+
+    /// Takes the next node into `it`; false when the walk is over.
+    bool next(Item& it) {
+        if (stack.empty()) return false;
+        it = stack.back();
+        stack.pop_back();
+        maxDepth = maxDepth > it.depth ? maxDepth : it.depth;
+        return true;
+    }
+    /// Queues node `child` of `parent`, whose box it must lie in.
+    void push(uint32_t child, const Item& parent, const Bounds3f& box) { stack.push_back({child, parent.depth + 1, box}); }
+};
+
+/// Where makeCityScene's rays start (and end): around its buildings and up to twice their height.
+inline const Bounds3f kCitySceneRayBox{{-120.0f, 0.1f, -120.0f}, {120.0f, 80.0f, 120.0f}};
+
+/// Random rays from anywhere in `box`: half towards anywhere in it moved `drop` metres down, half
+/// aimed at random points of random triangles; some short, some with unit directions.
+inline std::vector<Ray> cityRays(const std::vector<Triangle>& tris, const Bounds3f& box, float drop, int count,
+                                 uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::uniform_int_distribution<size_t> pick(0, tris.size() - 1);
+    const Vec3f e = box.extent();
+    auto anywhere = [&] { return Vec3f{box.lo.x + e.x * unit(rng), box.lo.y + e.y * unit(rng), box.lo.z + e.z * unit(rng)}; };
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        const Vec3f o = anywhere();
+        Vec3f target = anywhere();
+        target.y -= drop;
+        if (i % 2) {
+            const Triangle& t = tris[pick(rng)];
+            float a = unit(rng), b = unit(rng);
+            if (a + b > 1.0f) {
+                a = 1.0f - a;
+                b = 1.0f - b;
+            }
+            target = t.p0 + (t.p1 - t.p0) * a + (t.p2 - t.p0) * b;
+        }
+        Ray ray{o, target - o};
+        if (i % 7 == 0) ray.tmax = 0.5f + unit(rng);   // some short rays
+        if (i % 11 == 0) ray.dir = normalize(ray.dir);
+        rays.push_back(ray);
+    }
+    return rays;
+}
+
+/// The closest hit among all triangles, tested one by one (the reference for the BVHs).
+inline Hit bruteForce(const std::vector<Triangle>& tris, Ray ray) {
+    const WatertightRay wr(ray);
+    Hit hit;
+    for (uint32_t i = 0; i < tris.size(); ++i) {
+        float t, u, v;
+        if (intersectTriangle(tris[i], ray, wr, t, u, v)) {
+            hit = {i, t, u, v};
+            ray.tmax = t;
+        }
+    }
+    return hit;
 }
 
 } // namespace urbis::test

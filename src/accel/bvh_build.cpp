@@ -1,5 +1,7 @@
 #include "accel/bvh_build.h"
 
+#include "accel/binary_bvh.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
@@ -17,17 +19,6 @@ constexpr uint32_t kMaxBins = 32;
 constexpr uint32_t kMedianSplitDepth = 32;
 /// Nodes with at least this many primitives bin and bound their primitives in parallel.
 constexpr uint32_t kParallelBinningThreshold = 1u << 16;
-
-/// A node of the intermediate binary tree, collapsed into 4-wide nodes at the end.
-/// Interior: primCount == 0 and `first` is the right child (in slots: its slot; after
-/// compact(): the left child, the right one follows). Leaf: primitives [first, first +
-/// primCount) of primOrder.
-struct BinaryNode {
-    Bounds3f box;
-    uint32_t first = 0;
-    uint32_t primCount = 0;
-    bool isLeaf() const { return primCount != 0; }
-};
 
 /// Min and max as compare-and-select: g++ does not inline fminf/fmaxf (NaN rules), which
 /// made them most of the build time.
@@ -96,8 +87,8 @@ struct Split {
 class Builder {
 public:
     Builder(const std::vector<Bounds3f>& primBounds, const std::vector<uint32_t>& primCosts,
-            const BvhBuildOptions& options, Bvh& bvh)
-        : bounds_(primBounds), costs_(primCosts), options_(options), order_(bvh.primOrder) {
+            const BvhBuildOptions& options, std::vector<uint32_t>& primOrder)
+        : bounds_(primBounds), costs_(primCosts), options_(options), order_(primOrder) {
         const uint32_t n = static_cast<uint32_t>(primBounds.size());
         centroids_.resize(n);
         order_.resize(n);
@@ -339,61 +330,27 @@ BvhNode emptyWideNode() {
     return node;
 }
 
-/// Collapses the binary tree into 4-wide nodes: each wide node takes the children of a
-/// binary node and keeps opening its largest interior child until it has kBvhWidth
-/// (as in Embree's BVH4 builders). Depth first, so siblings' subtrees stay close in memory.
+/// Collapses the binary tree into 4-wide nodes (gatherLanes). Depth first, so siblings'
+/// subtrees stay close in memory.
 /// The root takes at most `rootLanes` children (lanes left free for attachLeafAtRoot).
 std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLanes) {
     std::vector<BvhNode> wide{emptyWideNode()};
-    struct Pending {
-        uint32_t wide, binary;
-    };
-    std::vector<Pending> stack{{0, 0}};
-    while (!stack.empty()) {
-        const Pending p = stack.back();
-        stack.pop_back();
-        uint32_t lanes[kBvhWidth];
-        int count = 0;
-        const BinaryNode& top = binary[p.binary];
-        if (top.isLeaf()) {
-            lanes[count++] = p.binary;   // a root that is a leaf
-        } else {
-            lanes[count++] = top.first;
-            lanes[count++] = top.first + 1;
-        }
-        while (count < (p.wide == 0 ? rootLanes : kBvhWidth)) {
-            int open = -1;
-            for (int l = 0; l < count; ++l) {
-                const BinaryNode& n = binary[lanes[l]];
-                if (!n.isLeaf() && (open < 0 || n.box.area() > binary[lanes[open]].box.area())) open = l;
-            }
-            if (open < 0) break;
-            const uint32_t left = binary[lanes[open]].first;
-            for (int l = count; l > open + 1; --l) lanes[l] = lanes[l - 1];
-            lanes[open] = left;
-            lanes[open + 1] = left + 1;
-            ++count;
-        }
-        Pending children[kBvhWidth];
-        int childCount = 0;
+    collapseDepthFirst<kBvhWidth>(binary, rootLanes, [&](uint32_t at, const uint32_t* lanes, int count, uint32_t* children) {
         for (int l = 0; l < count; ++l) {
             const BinaryNode& n = binary[lanes[l]];
-            BvhNode& w = wide[p.wide];
+            if (!n.isLeaf()) {
+                children[l] = static_cast<uint32_t>(wide.size());
+                wide.push_back(emptyWideNode());
+            }
+            BvhNode& w = wide[at];
             for (int axis = 0; axis < 3; ++axis) {
                 w.bounds[axis][l] = n.box.lo[axis];
                 w.bounds[axis + 3][l] = n.box.hi[axis];
             }
-            if (n.isLeaf()) {
-                w.child[l] = n.first;
-                w.primCount[l] = n.primCount;
-            } else {
-                w.child[l] = static_cast<uint32_t>(wide.size());
-                children[childCount++] = {w.child[l], lanes[l]};
-                wide.push_back(emptyWideNode());   // invalidates w
-            }
+            w.child[l] = n.isLeaf() ? n.first : children[l];
+            w.primCount[l] = n.primCount;
         }
-        for (int c = childCount - 1; c >= 0; --c) stack.push_back(children[c]);
-    }
+    });
     return wide;
 }
 
@@ -407,6 +364,39 @@ void markCostlyLeaves(const std::vector<uint32_t>& primCosts, Bvh& bvh) {
 
 } // namespace
 
+int gatherLanes(const std::vector<BinaryNode>& binary, uint32_t top, uint32_t* lanes, int maxLanes) {
+    if (binary[top].isLeaf()) {
+        lanes[0] = top;   // a root that is a leaf
+        return 1;
+    }
+    int count = 0;
+    lanes[count++] = binary[top].first;
+    lanes[count++] = binary[top].first + 1;
+    while (count < maxLanes) {
+        int open = -1;
+        for (int l = 0; l < count; ++l) {
+            const BinaryNode& n = binary[lanes[l]];
+            if (!n.isLeaf() && (open < 0 || n.box.area() > binary[lanes[open]].box.area())) open = l;
+        }
+        if (open < 0) break;
+        const uint32_t left = binary[lanes[open]].first;
+        for (int l = count; l > open + 1; --l) lanes[l] = lanes[l - 1];
+        lanes[open] = left;
+        lanes[open + 1] = left + 1;
+        ++count;
+    }
+    return count;
+}
+
+BinaryBvh buildBinaryBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options,
+                         const std::vector<uint32_t>& primCosts) {
+    BinaryBvh binary;
+    Builder builder(primBounds, primCosts, options, binary.primOrder);
+    builder.run();
+    binary.nodes = builder.compact();
+    return binary;
+}
+
 Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options,
              const std::vector<uint32_t>& primCosts) {
     Bvh bvh;
@@ -414,9 +404,9 @@ Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& opt
         bvh.nodes.push_back(emptyWideNode());
         return bvh;
     }
-    Builder builder(primBounds, primCosts, options, bvh);
-    builder.run();
-    bvh.nodes = collapse(builder.compact(), std::max(2, kBvhWidth - int(options.freeRootLanes)));
+    BinaryBvh binary = buildBinaryBvh(primBounds, options, primCosts);
+    bvh.primOrder = std::move(binary.primOrder);
+    bvh.nodes = collapse(binary.nodes, std::max(2, kBvhWidth - int(options.freeRootLanes)));
     if (!primCosts.empty()) markCostlyLeaves(primCosts, bvh);
     return bvh;
 }

@@ -9,6 +9,15 @@
 
 namespace urbis {
 
+/// Tests triangles[prim] (watertight); on a hit fills h and shrinks r.tmax to its distance.
+URBIS_HD inline bool hitTriangle(const Triangle* triangles, const WatertightRay& wr, uint32_t prim, Ray& r, Hit& h) {
+    float t, u, v;
+    if (!intersectTriangle(triangles[prim], r, wr, t, u, v)) return false;
+    h = {prim, t, u, v};
+    r.tmax = t;
+    return true;
+}
+
 /// The closest triangle hit with ray.tmin < t < ray.tmax (anyHit false), or the first one found
 /// in any order (anyHit true: a shadow ray), in world space. Hit::prim is the index into
 /// view.triangles (leaf order); invalid if nothing is hit. Watertight (Woop et al. 2013) and
@@ -17,13 +26,8 @@ URBIS_HD inline Hit traceTriangles(const TriangleSceneView& view, Ray ray, bool 
     const BvhRay br(ray);
     const WatertightRay wr(ray, br.invDir);
     Hit hit;
-    traverseBvh(view.nodes, br, ray, hit, anyHit, [&](uint32_t prim, Ray& r, Hit& h) {
-        float t, u, v;
-        if (!intersectTriangle(view.triangles[prim], r, wr, t, u, v)) return false;
-        h = {prim, t, u, v};
-        r.tmax = t;
-        return true;
-    });
+    traverseBvh(view.nodes, br, ray, hit, anyHit,
+                [&](uint32_t prim, Ray& r, Hit& h) { return hitTriangle(view.triangles, wr, prim, r, h); });
     return hit;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "accel/bvh_node.h"
+#include "accel/wide_bvh_node.h"
 #include "scene/triangle.h"
 
 #include <cstdint>
@@ -13,6 +14,13 @@ namespace urbis {
 /// triangles reordered by its primOrder (triangles[i] = original[primOrder[i]]).
 struct TriangleSceneView {
     const BvhNode* nodes;
+    const Triangle* triangles;
+    uint32_t triangleCount;
+};
+
+/// The same over an 8-wide compressed BVH: nodes from buildWideBvh, triangles in its primOrder.
+struct WideTriangleSceneView {
+    const WideBvhNode* nodes;
     const Triangle* triangles;
     uint32_t triangleCount;
 };
