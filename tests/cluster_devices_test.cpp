@@ -95,19 +95,19 @@ TEST(ClusterDevices, QueueHandsOutEachIndexOnceAcrossThreads) {
 }
 
 TEST(ClusterDevices, TilesOverCpuDevicesMakeTheFilmOfOneRender) {
+    // The wall of the MPI tiles' test (cluster_tiles_test.cpp), 72 x 40 at 3 spp, on three devices, one
+    // of them slow: the queue gives it fewer tiles, and the film is the one of one render.
     const Scene scene = test::wallScene(true);
     const Camera camera = test::wallCamera(72.0f / 40.0f);
     const RenderSettings settings = test::filmSettings(72, 40, 3);
-    RenderCounters counters;
-    Film whole(settings.width, settings.height, true);
-    renderCpu(scene.view(), camera, settings, {0, settings.spp}, whole, false, counters);
-
-    // Three devices, one of them slow: the queue gives it fewer tiles, the film is the same.
     CpuDevice fast(scene, camera, settings), slow(scene, camera, settings, std::chrono::milliseconds(20)),
         other(scene, camera, settings);
     const std::vector<PixelRect> tiles = tilesOf(settings.width, settings.height, 16);   // 15 tiles
     Film gathered(settings.width, settings.height, true);
     const TileShare share = renderTilesOnWorkers({&fast, &slow, &other}, tiles, gathered);
+    Film whole(settings.width, settings.height, true);
+    RenderCounters counters;
+    renderCpu(scene.view(), camera, settings, {0, settings.spp}, whole, false, counters);
     test::expectSameFilmBits(whole, gathered);
     EXPECT_EQ(share.rays, counters.rays);
     ASSERT_EQ(share.tilesByWorker.size(), 3u);

@@ -42,11 +42,9 @@ Scene litVillage(float sunElevation, float hour, const RenderSettings& settings,
     return scene;
 }
 
+/// filmSettings with the seed the tests below render at.
 RenderSettings smallSettings(uint32_t width, uint32_t height, uint32_t spp) {
-    RenderSettings settings;
-    settings.width = width;
-    settings.height = height;
-    settings.spp = spp;
+    RenderSettings settings = filmSettings(width, height, spp);
     settings.seed = 5;
     return settings;
 }

@@ -1,8 +1,8 @@
 #include "app/render_device.h"
 
-#include "cluster/device_list.h"
 #include "app/tile_renderers.h"
 #include "base/input_error.h"
+#include "cluster/device_list.h"
 #include "cluster/tile_grid.h"
 #include "cluster/tile_workers.h"
 
