@@ -33,9 +33,14 @@ std::vector<int> devicesOf(const std::string& devices, const std::string& device
     if (devices.empty()) return {};
     if (device == "cpu") throw InputError("--devices " + devices + ": not with --device cpu (the devices are GPUs)", FailureKind::Usage);
     const int count = gpuDeviceCount();
-    const std::string noDevice = probeGpu().reason;   // "urbis was built without CUDA", "no CUDA device: ..."
-    if (count == 0) throw InputError("--devices " + devices + ": " + noDevice, FailureKind::Device);
-    std::vector<int> list = parseDeviceList(devices, count);
+    std::vector<int> list;
+    try {
+        list = parseDeviceList(devices, count);   // a list that does not parse is said first
+    } catch (const InputError& e) {
+        if (count > 0 || e.kind() != FailureKind::Device) throw;
+        // Why there is none: "urbis was built without CUDA", "no CUDA device: <the driver's error>".
+        throw InputError("--devices " + devices + ": " + probeGpu().reason, FailureKind::Device);
+    }
     if (list.size() > 1 && integrator != IntegratorKind::Path)
         throw InputError("--devices " + devices + ": over several GPUs only the path integrator renders (--integrator path): "
                          "the photon passes span the frame", FailureKind::Usage);
