@@ -50,7 +50,7 @@ LAYERS = {
     "description": 13,  # the scene description and its JSON scene files
     "cpu": 14,          # the CPU backend (TBB)
     "gpu": 14,          # the CUDA backend; shares nothing with cpu/ but what lies below both
-    "cluster": 14,      # MPI: the job's ranks, the tile queue of one frame, frames spread over ranks
+    "cluster": 14,      # MPI: the job's ranks, the tile queue of one frame, frames spread over ranks; a process's GPUs
     "viewer": 14,       # the viewer's camera, input handling, scene edits and scripts, apart from any window
     "export": 14,       # the triangle twin as glTF and OBJ files (tinygltf), whole or in tiles
     "animation": 14,    # camera paths and time-of-day keyframes: the scene description of any instant

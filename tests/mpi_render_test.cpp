@@ -48,6 +48,27 @@ TEST(MpiRender, TwoRanksWriteThePngOfOneProcess) {
     EXPECT_EQ(tiles[0] + tiles[1], 24u) << "96x64 in tiles of 16 (tileSizeFor)";
 }
 
+TEST(MpiRender, TwoRanksOnTheGpuWriteThePngOfOneProcess) {
+    std::string why;
+    const std::string mpirun = mpirunPrefix(2, why);
+    if (mpirun.empty()) GTEST_SKIP() << why;
+    auto dir = scratchDir("mpi_two_ranks_gpu");
+    // 150x90: tiles of 32 (tileSizeFor, kGpuTileSide halved), ragged at the right and the bottom.
+    const std::string gpuFrame = "render --width 150 --height 90 --spp 4 --buildings 60 --device cuda --denoise ";
+    CommandResult one = runUrbis(gpuFrame + "--out one.png", dir);
+    if (one.exitCode == 4) GTEST_SKIP() << "no usable GPU: " << one.err;
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    // Both ranks on the one GPU (local ranks 0 and 1 modulo one device).
+    CommandResult two = runUrbis(gpuFrame + "--out two.png --stats stats.json", dir, mpirun);
+    ASSERT_EQ(two.exitCode, 0) << two.err;
+    EXPECT_EQ(readFile(dir / "one.png"), readFile(dir / "two.png")) << "the ranks' GPU tiles are not the one process's frame";
+    const nlohmann::json stats = nlohmann::json::parse(readFile(dir / "stats.json"));
+    EXPECT_EQ(stats.at("device"), "cuda");
+    const std::vector<uint32_t> tiles = stats.at("tiles_by_rank").get<std::vector<uint32_t>>();
+    ASSERT_EQ(tiles.size(), 2u);
+    EXPECT_EQ(tiles[0] + tiles[1], 15u) << "150x90 in tiles of 32";
+}
+
 TEST(MpiRender, KilledRankEndsTheJobWithoutOutput) {
     std::string why;
     const std::string mpirun = mpirunPrefix(2, why);

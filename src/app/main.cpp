@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
                  "  urbis render --osm city.osm.pbf --stats stats.json\n"
                  "  urbis render --osm city.osm.pbf --camera-geo -122.397,37.789,300,20,-25\n"
                  "  urbis render --device cuda --spp 256 --out gpu.png\n"
+                 "  urbis render --devices all --width 3840 --height 2160 --spp 256 --out big.png   # tiles over every GPU\n"
                  "  urbis render --osm city.osm.pbf --save-scene city.json   # and later: urbis render --scene city.json\n"
                  "  urbis render --scene fly.json --frames 0:119 --out frames/f%04d.png --video fly.mp4   # its animation\n"
                  "  urbis bench --device cuda --buildings 100000 --json bench.json\n"

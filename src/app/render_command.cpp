@@ -42,6 +42,8 @@ void addRenderCommand(CLI::App& app, RenderCommandLine& line) {
     cmd->add_option("--stats", o.statsFile, "Write counts, memory, timings and rays/s as JSON (a .json file)");
     cmd->add_option("--device", o.device, "auto (the GPU if usable, else the CPU), cpu or cuda")
         ->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
+    cmd->add_option("--devices", o.devices,
+                    "all or 0,1,...: the CUDA devices to spread tiles (and --frames) over, one process (docs/multi_gpu.md)");
     addRunOptions(*cmd, o);
     FrameOptions& f = line.frames;
     cmd->add_option("--frames", f.frames,
@@ -235,12 +237,16 @@ void runRender(const RenderOptions& o, const MpiWorld* world) {
     requireMemory(hostFilmBytes(film.width, film.height, filmOutputNeedsAovs(film.output, layers), film.denoise), limit,
                   "the " + std::to_string(film.width) + "x" + std::to_string(film.height) + " image");
 
+    const std::vector<int> gpus = devicesOf(run.devices, run.device, renderSettingsOf(o.scene.integrator, film).integrator);
+    if (!gpus.empty() && world && world->ranks() > 1)
+        throw InputError("--devices under mpirun: each rank takes the GPU of its local rank (--device cuda; docs/multi_gpu.md)",
+                         FailureKind::Usage);
     PreparedScene prepared = prepareScene(o.scene, run.strict, limit);
     // Written once the input has proved good, before the render's time is spent.
     const bool writes = !world || world->isRoot();
     if (writes && !o.saveSceneFile.empty()) writeSceneFile(o.scene, o.saveSceneFile);
     if (animated) {
-        renderFrames(o, prepared, world);
+        renderFrames(o, prepared, gpus, world);
         return;
     }
     RenderSettings settings = renderSettingsOf(o.scene.integrator, film);
@@ -253,8 +259,9 @@ void runRender(const RenderOptions& o, const MpiWorld* world) {
         tilesByRank = renderAcrossRanks(*world, prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image,
                           film.denoise, run.device, counters, device);
     else
-        renderOnDevice(prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image, film.denoise,
-                       run.device, isatty(2), run.verbose, counters, device);
+        RenderBackend(prepared.scene, gpus.empty() ? run.device : "cuda", gpus, Film::bytesFor(image.width, image.height, aovs),
+                      run.verbose)
+            .render(prepared.camera, settings, image.nextSamples(settings.spp), image, film.denoise, isatty(2), counters, device);
     if (!writes) return;
 
     auto t0 = Clock::now();

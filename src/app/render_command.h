@@ -22,6 +22,7 @@ struct RunOptions {
     std::string statsFile;
     unsigned threads = 0;             ///< 0: all cores
     std::string device = "auto";      ///< "auto", "cpu" or "cuda"
+    std::string devices;              ///< --devices all|0,1,...: the CUDA devices of one process (devicesOf); empty: one
     std::string maxMemory;            ///< --max-memory: empty for the default (see memoryLimit)
     bool strict = false;              ///< warnings (the camera checks) are errors
     bool verbose = false;             ///< say which device renders and why

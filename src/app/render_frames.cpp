@@ -1,10 +1,13 @@
 #include "app/render_frames.h"
 
 #include "cluster/frame_spread.h"
+#include "cluster/tile_queue.h"
+#include "cluster/tile_workers.h"
 
 #include "animation/animation_timeline.h"
 #include "animation/frame_range.h"
 #include "app/render_device.h"
+#include "app/render_ranks.h"
 #include "app/video_encoding.h"
 #include "base/input_error.h"
 #include "description/scene_lighting.h"
@@ -15,6 +18,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <mutex>
 #include <unistd.h>
 
 namespace urbis {
@@ -64,7 +69,7 @@ void checkFrameOptions(const RenderOptions& o) {
         throw InputError(folder.string() + ": cannot make the frames' folder (" + ec.message() + ")", FailureKind::Output);
 }
 
-void renderFrames(const RenderOptions& o, PreparedScene& prepared, const MpiWorld* world) {
+void renderFrames(const RenderOptions& o, PreparedScene& prepared, const std::vector<int>& gpus, const MpiWorld* world) {
     const auto start = Clock::now();
     const FilmDescription& film = o.scene.film;
     const std::string& pattern = film.output;
@@ -80,32 +85,63 @@ void renderFrames(const RenderOptions& o, PreparedScene& prepared, const MpiWorl
                 size_t(range.count()) - frames.size());
     std::fflush(stdout);
 
+    // The scene goes to each GPU once, before the first frame: one backend a device of --devices, each
+    // rendering whole frames; else one, on the GPU of this rank's local rank under mpirun.
+    const size_t filmBytes = Film::bytesFor(settings.width, settings.height, aovs);
+    std::vector<std::unique_ptr<RenderBackend>> backends;
+    if (gpus.size() > 1) {
+        for (int gpu : gpus) backends.push_back(std::make_unique<RenderBackend>(prepared.scene, "cuda", std::vector<int>{gpu},
+                                                                                filmBytes, o.run.verbose));
+    } else {
+        const bool rankGpu = gpus.empty() && world && world->ranks() > 1 && o.run.device == "cuda";
+        const std::vector<int> device = rankGpu ? std::vector<int>{gpuOfRank(*world)} : gpus;
+        backends.push_back(std::make_unique<RenderBackend>(prepared.scene, gpus.empty() ? o.run.device : "cuda", device,
+                                                           filmBytes, o.run.verbose));
+    }
+
+    // Frames go to the backends from one queue. The host scene is relit and the lights uploaded under
+    // the lock (another device's frame may be relighting it); the render then reads only its device.
+    std::mutex lock;
+    TileQueue queue(frames.size());
+    size_t done = 0;
     double secondsRendering = 0;
     std::string device = "cpu";
-    for (size_t i = 0; i < frames.size(); ++i) {
-        const auto t0 = Clock::now();
-        const uint32_t n = frames[i];
-        const SceneDescription d = timeline.frame(n);
-        if (timeMoves) {   // only the lights and the sky: the geometry and its BVH stay as built
-            relightWindows(prepared.scene, prepared.windowUses, hourOf(d));
-            lightScene(prepared.scene, d, prepared.origin);
+    const bool showProgress = isatty(2) && backends.size() == 1;
+    runOnWorkerThreads(backends.size(), [&](size_t b) {
+        RenderBackend& backend = *backends[b];
+        for (int32_t i; (i = queue.take()) >= 0;) {
+            const auto t0 = Clock::now();
+            const uint32_t n = frames[size_t(i)];
+            Camera camera;
+            FilmOutputOptions output;
+            {
+                const std::lock_guard<std::mutex> held(lock);
+                const SceneDescription d = timeline.frame(n);
+                if (timeMoves) {   // only the lights and the sky: the geometry and its BVH stay as built
+                    relightWindows(prepared.scene, prepared.windowUses, hourOf(d));
+                    lightScene(prepared.scene, d, prepared.origin);
+                    backend.relight();
+                }
+                camera = cameraOf(d.camera, float(film.width) / float(film.height), prepared.origin, prepared.framingPieces);
+                output = FilmOutputOptions{d.film.exposure, film.exrFloat, layers};
+            }
+            Film image(settings.width, settings.height, aovs);
+            RenderCounters counters;
+            DeviceReport report;
+            backend.render(camera, settings, image.nextSamples(settings.spp), image, film.denoise, showProgress, counters, report);
+            const std::string path = framePath(pattern, n);
+            writeFilm(image, path, output);
+            const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+            const std::lock_guard<std::mutex> held(lock);
+            device = report.device;
+            secondsRendering += seconds;
+            ++done;
+            const double left = secondsRendering / double(done) * double(frames.size() - done) / double(backends.size());
+            std::printf("urbis: frame %u (%zu of %zu) %s in %.2f s, about %s left\n", n, done, frames.size(), path.c_str(),
+                        seconds, durationText(left).c_str());
+            std::fflush(stdout);
         }
-        const Camera camera = cameraOf(d.camera, float(film.width) / float(film.height), prepared.origin, prepared.framingPieces);
-        Film image(settings.width, settings.height, aovs);
-        RenderCounters counters;
-        DeviceReport report;
-        renderOnDevice(prepared.scene, camera, settings, image.nextSamples(settings.spp), image, film.denoise, o.run.device,
-                       isatty(2), o.run.verbose && i == 0, counters, report);
-        const std::string path = framePath(pattern, n);
-        writeFilm(image, path, FilmOutputOptions{d.film.exposure, film.exrFloat, layers});
-        device = report.device;
-        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        secondsRendering += seconds;
-        const double left = secondsRendering / double(i + 1) * double(frames.size() - i - 1);
-        std::printf("urbis: frame %u (%zu of %zu) %s in %.2f s, about %s left\n", n, i + 1, frames.size(), path.c_str(),
-                    seconds, durationText(left).c_str());
-        std::fflush(stdout);
-    }
+    });
     if (world && world->ranks() > 1) world->barrier();   // every frame written before the video reads them
     if (!o.frames.video.empty() && (!world || world->isRoot())) {
         encodeVideo(pattern, range, o.scene.animation.fps, o.frames.video);

@@ -42,22 +42,17 @@ void check(int status, const char* call) {
 
 /// Rank 0: answers requests and collects tiles until every other rank has been told there are no
 /// more, while a second thread renders tiles from the same queue.
-TileShare serveTiles(const MpiWorld& world, const std::vector<PixelRect>& tiles, Film& film,
-                     const std::function<uint64_t(const PixelRect&)>& renderTile) {
+TileShare serveTiles(const MpiWorld& world, const std::vector<PixelRect>& tiles, Film& film, TileRenderer& renderer) {
     TileShare share;
-    share.tilesByRank.assign(size_t(world.ranks()), 0);
-    std::atomic<size_t> next{0};
-    auto take = [&]() -> int32_t {
-        const size_t i = next++;
-        return i < tiles.size() ? int32_t(i) : -1;
-    };
+    share.tilesByWorker.assign(size_t(world.ranks()), 0);
+    TileQueue queue(tiles.size());
     std::atomic<uint64_t> localRays{0};
     std::exception_ptr localFailure;
     std::thread local([&] {
         try {
-            for (int32_t i; (i = take()) >= 0;) {
-                localRays += renderTile(tiles[size_t(i)]);
-                ++share.tilesByRank[0];
+            for (int32_t i; (i = queue.take()) >= 0;) {
+                localRays += renderer.renderTile(tiles[size_t(i)], film);
+                ++share.tilesByWorker[0];
             }
         } catch (...) {
             localFailure = std::current_exception();
@@ -85,9 +80,9 @@ TileShare serveTiles(const MpiWorld& world, const std::vector<PixelRect>& tiles,
             message.erase(message.begin(), message.begin() + sizeof header);
             unpackFilmRect(message, tiles.at(size_t(header.tile)), film);
             share.rays += header.rays;
-            ++share.tilesByRank[size_t(status.MPI_SOURCE)];
+            ++share.tilesByWorker[size_t(status.MPI_SOURCE)];
         }
-        const int32_t assigned = take();
+        const int32_t assigned = queue.take();
         check(MPI_Send(&assigned, 1, MPI_INT32_T, status.MPI_SOURCE, kAssign, MPI_COMM_WORLD), "MPI_Send");
         if (assigned < 0) --working;
     }
@@ -98,8 +93,7 @@ TileShare serveTiles(const MpiWorld& world, const std::vector<PixelRect>& tiles,
 }
 
 /// Ranks 1..N-1: ask, render, send back, until rank 0 answers -1.
-void workOnTiles(const MpiWorld& world, const std::vector<PixelRect>& tiles, Film& film,
-                 const std::function<uint64_t(const PixelRect&)>& renderTile) {
+void workOnTiles(const MpiWorld& world, const std::vector<PixelRect>& tiles, Film& film, TileRenderer& renderer) {
     check(MPI_Send(nullptr, 0, MPI_BYTE, 0, kReady, MPI_COMM_WORLD), "MPI_Send");
     std::vector<uint8_t> message;
     for (;;) {
@@ -107,7 +101,7 @@ void workOnTiles(const MpiWorld& world, const std::vector<PixelRect>& tiles, Fil
         check(MPI_Recv(&tile, 1, MPI_INT32_T, 0, kAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
         dieIfTestAsks(world.rank());
         if (tile < 0) return;
-        const TileHeader header{tile, renderTile(tiles.at(size_t(tile)))};
+        const TileHeader header{tile, renderer.renderTile(tiles.at(size_t(tile)), film)};
         const std::vector<uint8_t> pixels = packFilmRect(film, tiles[size_t(tile)]);
         message.resize(sizeof header + pixels.size());
         std::memcpy(message.data(), &header, sizeof header);
@@ -139,10 +133,11 @@ void MpiWorld::abort(int exitCode) const {
 }
 
 TileShare renderTilesAcrossRanks(const MpiWorld& world, const std::vector<PixelRect>& tiles, Film& film,
-                                 const std::function<uint64_t(const PixelRect&)>& renderTile) {
+                                 TileRenderer& renderer) {
+    renderer.startFrame(film);
     TileShare share;
-    if (world.isRoot()) share = serveTiles(world, tiles, film, renderTile);
-    else workOnTiles(world, tiles, film, renderTile);
+    if (world.isRoot()) share = serveTiles(world, tiles, film, renderer);
+    else workOnTiles(world, tiles, film, renderer);
     // Rank 0 writes only once every rank is known to be alive at the end: a rank that died anywhere
     // before leaves rank 0 here until mpirun ends the job.
     check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");

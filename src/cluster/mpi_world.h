@@ -2,11 +2,12 @@
 // that spreads one frame over the ranks. The build without MPI (mpi_world_none.cpp) refuses to join.
 #pragma once
 
+#include "cluster/tile_queue.h"
+#include "cluster/tile_renderer.h"
 #include "film/film.h"
 #include "film/pixel_rect.h"
 
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace urbis {
@@ -40,19 +41,14 @@ private:
     int rank_ = 0, ranks_ = 1, localRank_ = 0;
 };
 
-/// What each rank did in renderTilesAcrossRanks (complete on rank 0 only).
-struct TileShare {
-    std::vector<uint32_t> tilesByRank;  ///< tiles rendered by each rank, rank 0 first
-    uint64_t rays = 0;                  ///< rays traced by all ranks
-};
-
 /// Renders `tiles` of `film` across the ranks of `world`: rank 0 hands the tiles out one at a time
-/// to whichever rank asks next (a work queue, so that ranks of unequal speed share the frame by what
-/// each manages) and renders tiles itself on a second thread; `renderTile(tile)` adds the tile's
-/// samples to the calling rank's `film` and returns its rays. Each rank sends back the pixels of every
-/// tile it rendered (packFilmRect), so that on return rank 0's film holds the whole frame, bit for bit
-/// the film one process renders. Every rank calls it with the same tiles.
+/// to whichever rank asks next (a TileQueue, so that ranks of unequal speed share the frame by what
+/// each manages) and renders tiles itself on a second thread; each rank's `renderer` (its CPU or its
+/// GPU) leaves a tile's pixels in that rank's `film`. Each rank sends back the pixels of every tile it
+/// rendered (packFilmRect), so that on return rank 0's film holds the whole frame, bit for bit the
+/// film one process renders with the same renderer. Every rank calls it with the same tiles. The
+/// returned share (tiles by rank) is complete on rank 0 only.
 TileShare renderTilesAcrossRanks(const MpiWorld& world, const std::vector<PixelRect>& tiles, Film& film,
-                                 const std::function<uint64_t(const PixelRect&)>& renderTile);
+                                 TileRenderer& renderer);
 
 } // namespace urbis

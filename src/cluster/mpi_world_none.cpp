@@ -16,8 +16,7 @@ MpiWorld::~MpiWorld() = default;
 void MpiWorld::abort(int exitCode) const { std::exit(exitCode); }
 void MpiWorld::barrier() const {}
 
-TileShare renderTilesAcrossRanks(const MpiWorld&, const std::vector<PixelRect>&, Film&,
-                                 const std::function<uint64_t(const PixelRect&)>&) {
+TileShare renderTilesAcrossRanks(const MpiWorld&, const std::vector<PixelRect>&, Film&, TileRenderer&) {
     throw InputError("urbis was built without MPI", FailureKind::Usage);
 }
 

@@ -14,10 +14,10 @@ std::vector<PixelRect> tilesOf(uint32_t width, uint32_t height, uint32_t tileSiz
     return tiles;
 }
 
-uint32_t tileSizeFor(uint32_t width, uint32_t height, int ranks) {
-    uint32_t size = 64;
+uint32_t tileSizeFor(uint32_t width, uint32_t height, int workers, uint32_t largest) {
+    uint32_t size = largest;
     auto tiles = [&](uint32_t side) { return size_t((width + side - 1) / side) * ((height + side - 1) / side); };
-    while (size > 16 && tiles(size) < 4 * size_t(ranks)) size /= 2;
+    while (size > 16 && tiles(size) < 4 * size_t(workers)) size /= 2;
     return size;
 }
 

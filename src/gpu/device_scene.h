@@ -31,6 +31,30 @@ struct DeviceScene {
         lights = scene.lights;
     }
 
+    /// Copies again what the time of day sets (description/scene_lighting.h: relightWindows, then
+    /// lightScene): the walls' lit chances, the light list and its BVH, the sky's tables and LUTs, and
+    /// the small records. The rest (geometry, BVH, terrain, clouds) does not depend on the hour.
+    void uploadLighting(const Scene& scene) {
+        walls.upload(scene.walls);
+        lightRecords.upload(scene.lightRecords);
+        lightPower.upload(scene.lightPower);
+        emissiveSurfaces.upload(scene.emissiveSurfaces);
+        triangleLights.upload(scene.triangleLights);
+        lampLights.upload(scene.lampLights);
+        emitterTriangles.upload(scene.emitterTriangles);
+        lightBvhNodes.upload(scene.lightBvhNodes);
+        lightBvhTrails.upload(scene.lightBvhTrails);
+        infiniteLights.upload(scene.infiniteLights);
+        skyTable.upload(scene.skyTable);
+        transmittanceLut.upload(scene.transmittanceLut);
+        multiScatteringLut.upload(scene.multiScatteringLut);
+        skyViewLut.upload(scene.skyViewLut);
+        sun = scene.sun;
+        sky = scene.sky;
+        night = scene.night;
+        lights = scene.lights;
+    }
+
     /// Device bytes held now, by array.
     SceneMemory memory() const {
         SceneMemory out;

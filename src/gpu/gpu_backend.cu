@@ -3,6 +3,7 @@
 // code (the denoiser's passes), the same as the CPU backend.
 #include "gpu/gpu_backend.h"
 
+#include "film/pixel_rect.h"
 #include "gpu/cuda_check.h"
 #include "gpu/device_buffer.h"
 #include "gpu/device_event_timer.h"
@@ -36,20 +37,20 @@ constexpr int kTraceBlock = 128;
 template <bool CostlyLeaves>
 constexpr int kRenderBlocksPerSm = CostlyLeaves ? 4 : 5;
 
-/// One thread per pixel: adds `samples` to the film, in sample order as on the CPU. The scene holds
-/// nothing outside `Features` (renderVariantFor).
+/// One thread per pixel of `tile`: adds `samples` to the film, in sample order as on the CPU. The
+/// scene holds nothing outside `Features` (renderVariantFor).
 template <SceneFeatures Features>
 __global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<renderVariantHasCostlyLeaves(Features)>)
-    renderKernel(SceneView scene, Camera camera, RenderSettings settings, SampleRange samples, FilmView film,
-                 unsigned long long* rayCount) {
+    renderKernel(SceneView scene, Camera camera, RenderSettings settings, SampleRange samples, PixelRect tile,
+                 FilmView film, unsigned long long* rayCount) {
     // Constants from here on.
     scene.features = Features;
     scene.costlyLeaves = renderVariantHasCostlyLeaves(Features);
     if constexpr (!hasFeatures(Features, kPhotonsFeature)) settings.integrator = IntegratorKind::Path;
-    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
-    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+    const uint32_t x = tile.x0 + blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = tile.y0 + blockIdx.y * blockDim.y + threadIdx.y;
     uint32_t rays = 0;
-    if (x < settings.width && y < settings.height)
+    if (x < tile.x1 && y < tile.y1)
         rays = addPathSamples(scene, camera, settings, x, y, samples, film);
     // One atomic per warp.
     unsigned long long total = rays;
@@ -61,19 +62,20 @@ __global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<renderVari
 template <uint32_t... V>
 void launchRenderVariant(uint32_t variant, std::integer_sequence<uint32_t, V...>, dim3 grid, dim3 block,
                          const SceneView& scene, const Camera& camera, const RenderSettings& settings,
-                         SampleRange samples, const FilmView& film, unsigned long long* rayCount) {
+                         SampleRange samples, const PixelRect& tile, const FilmView& film, unsigned long long* rayCount) {
     (void)((variant == V &&
-            (renderKernel<kRenderVariants[V]><<<grid, block>>>(scene, camera, settings, samples, film, rayCount), true)) ||
+            (renderKernel<kRenderVariants[V]><<<grid, block>>>(scene, camera, settings, samples, tile, film, rayCount),
+             true)) ||
            ...);
 }
 
-/// One thread per pixel: the AOV pass of `samples`, apart from the path tracer's kernel.
+/// One thread per pixel of `tile`: the AOV pass of `samples`, apart from the path tracer's kernel.
 __global__ void __launch_bounds__(kTileX * kTileY) aovKernel(SceneView scene, Camera camera, RenderSettings settings,
-                                                             SampleRange samples, FilmView film) {
+                                                             SampleRange samples, PixelRect tile, FilmView film) {
     scene.features = kAllFeatures;   // one kernel for any scene: its tests of the kinds fold away
-    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
-    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
-    if (x < settings.width && y < settings.height) addAovSamples(scene, camera, settings, x, y, samples, film);
+    const uint32_t x = tile.x0 + blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = tile.y0 + blockIdx.y * blockDim.y + threadIdx.y;
+    if (x < tile.x1 && y < tile.y1) addAovSamples(scene, camera, settings, x, y, samples, film);
 }
 
 /// One thread per pixel: the denoiser's guide and starting signal.
@@ -148,7 +150,16 @@ uint32_t blocksFor(size_t count) { return uint32_t((count + kTraceBlock - 1) / k
 
 } // namespace
 
-GpuInfo probeGpu() {
+int gpuDeviceCount() {
+    int count = 0;
+    if (cudaGetDeviceCount(&count) != cudaSuccess) {
+        cudaGetLastError();   // clear the error so that later calls start clean
+        return 0;
+    }
+    return count;
+}
+
+GpuInfo probeGpu(int device) {
     GpuInfo info;
     int count = 0;
     cudaError_t status = cudaGetDeviceCount(&count);
@@ -157,9 +168,13 @@ GpuInfo probeGpu() {
         cudaGetLastError();   // clear the error so that later calls start clean
         return info;
     }
+    if (device < 0 || device >= count) {
+        info.reason = "no CUDA device " + std::to_string(device) + " (this machine has " + std::to_string(count) + ")";
+        return info;
+    }
     cudaDeviceProp prop{};
-    status = cudaGetDeviceProperties(&prop, 0);
-    if (status == cudaSuccess) status = cudaSetDevice(0);
+    status = cudaGetDeviceProperties(&prop, device);
+    if (status == cudaSuccess) status = cudaSetDevice(device);
     if (status == cudaSuccess) status = cudaMemGetInfo(&info.freeBytes, &info.totalBytes);
     if (status != cudaSuccess) {
         info.reason = std::string("no usable CUDA device: ") + cudaGetErrorString(status);
@@ -185,6 +200,7 @@ GpuInfo probeGpu() {
 }
 
 struct GpuScene::Impl {
+    int device = 0;
     GpuInfo info;
     DeviceScene scene;
     FilmArrays<DeviceBuffer> film;
@@ -215,19 +231,27 @@ struct GpuScene::Impl {
     /// integrator's camera pass sees of its photon pass.
     void launchRender(const Camera& camera, const RenderSettings& settings, SampleRange samples,
                       const PhotonsView& photons = {}) {
+        launchRender(camera, settings, samples, PixelRect{0, 0, settings.width, settings.height}, photons);
+    }
+    /// launchRender of the pixels of `tile` only.
+    void launchRender(const Camera& camera, const RenderSettings& settings, SampleRange samples, const PixelRect& tile,
+                      const PhotonsView& photons = {}) {
         if (filmWidth != settings.width || filmHeight != settings.height)
             throw std::invalid_argument("GpuScene::render: the film's size is not the settings' image size");
+        if (tile.x1 > filmWidth || tile.y1 > filmHeight || tile.x0 > tile.x1 || tile.y0 > tile.y1)
+            throw std::invalid_argument("GpuScene::render: the tile is not inside the film");
+        if (tile.pixels() == 0) return;
         dim3 block(kTileX, kTileY);
-        dim3 grid((settings.width + kTileX - 1) / kTileX, (settings.height + kTileY - 1) / kTileY);
+        dim3 grid((tile.width() + kTileX - 1) / kTileX, (tile.height() + kTileY - 1) / kTileY);
         SceneView view = scene.view();
         view.photons = photons;
         const FilmView target = filmView();
         const SceneFeatures features = view.features | (settings.integrator == IntegratorKind::Path ? 0 : kPhotonsFeature);
         launchRenderVariant(renderVariantFor(features), std::make_integer_sequence<uint32_t, kRenderVariantCount>{}, grid,
-                            block, view, camera, settings, samples, target, rayCount.data());
+                            block, view, camera, settings, samples, tile, target, rayCount.data());
         checkLaunch("renderKernel");
         if (!target.hasAovs()) return;
-        aovKernel<<<grid, block>>>(view, camera, settings, samples, target);
+        aovKernel<<<grid, block>>>(view, camera, settings, samples, tile, target);
         checkLaunch("aovKernel");
     }
 
@@ -250,6 +274,9 @@ struct GpuScene::Impl {
         }
     }
 
+    /// Makes this GpuScene's device the calling thread's: CUDA keeps the current device per host thread.
+    void use() const { URBIS_CUDA_CHECK(cudaSetDevice(device)); }
+
     /// Checks that `bytes` more fit in the free device memory.
     void requireFree(size_t bytes, const char* what) const {
         size_t freeBytes = 0, totalBytes = 0;
@@ -261,12 +288,17 @@ struct GpuScene::Impl {
 };
 
 GpuScene::GpuScene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-GpuScene::~GpuScene() = default;
 
-std::unique_ptr<GpuScene> GpuScene::upload(const Scene& scene, size_t extraBytes) {
+GpuScene::~GpuScene() {
+    if (cudaSetDevice(impl_->device) != cudaSuccess) cudaGetLastError();   // the buffers are freed on their device
+}
+
+std::unique_ptr<GpuScene> GpuScene::upload(const Scene& scene, size_t extraBytes, int device) {
+    GpuInfo info = probeGpu(device);   // makes `device` current before Impl allocates its first buffer
+    if (!info.available) throw InputError(info.reason, FailureKind::Device);
     auto impl = std::make_unique<Impl>();
-    impl->info = probeGpu();
-    if (!impl->info.available) throw InputError(impl->info.reason, FailureKind::Device);
+    impl->device = device;
+    impl->info = std::move(info);
     impl->requireFree(DeviceScene::bytesFor(scene) + extraBytes, "the scene");
     impl->scene.upload(scene);
     return std::unique_ptr<GpuScene>(new GpuScene(std::move(impl)));
@@ -274,6 +306,7 @@ std::unique_ptr<GpuScene> GpuScene::upload(const Scene& scene, size_t extraBytes
 
 void GpuScene::setFilm(const Film& host) {
     Impl& m = *impl_;
+    m.use();
     const size_t needed = Film::bytesFor(host.width, host.height, host.hasAovs());
     m.requireFree(needed > m.filmBytes() ? needed - m.filmBytes() : 0, "the film");
     forEachFilmArray([](auto, bool, auto& device, const auto& array) { device.upload(array); }, m.film, host.arrays);
@@ -283,18 +316,30 @@ void GpuScene::setFilm(const Film& host) {
 
 void GpuScene::render(const Camera& camera, const RenderSettings& settings, SampleRange samples,
                       RenderCounters& counters) {
+    render(camera, settings, samples, PixelRect{0, 0, settings.width, settings.height}, counters);
+}
+
+void GpuScene::render(const Camera& camera, const RenderSettings& settings, SampleRange samples, const PixelRect& tile,
+                      RenderCounters& counters) {
     Impl& m = *impl_;
+    m.use();
     URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
     EventTimer timer;
     timer.start();
-    m.launchRender(camera, settings, samples);
+    m.launchRender(camera, settings, samples, tile);
     counters.seconds = timer.stopMs() * 1e-3;
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());
     counters.rays = m.rayCount.download()[0];
 }
 
+void GpuScene::relight(const Scene& scene) {
+    impl_->use();
+    impl_->scene.uploadLighting(scene);
+}
+
 void GpuScene::denoise(const DenoiseParams& params) {
     Impl& m = *impl_;
+    m.use();
     const FilmView film = m.filmView();
     if (!film.hasAovs()) throw std::invalid_argument("GpuScene::denoise: the film keeps no AOVs to guide the filter");
     const size_t pixels = size_t(film.width) * film.height;
@@ -319,13 +364,31 @@ void GpuScene::denoise(const DenoiseParams& params) {
 
 void GpuScene::readFilm(Film& host) const {
     const Impl& m = *impl_;
+    m.use();
     host.width = m.filmWidth;
     host.height = m.filmHeight;
     forEachFilmArray([](auto, bool, const auto& device, auto& array) { array = device.download(); }, m.film, host.arrays);
 }
 
+void GpuScene::readFilm(const PixelRect& tile, Film& host) const {
+    const Impl& m = *impl_;
+    m.use();
+    if (host.width != m.filmWidth || host.height != m.filmHeight || host.hasAovs() != (m.film.albedoSum.size() > 0))
+        throw std::invalid_argument("GpuScene::readFilm: the host film is not the device film's size and layers");
+    if (tile.x1 > m.filmWidth || tile.y1 > m.filmHeight || tile.pixels() == 0) return;
+    forEachFilmArray(
+        [&](auto, bool, const auto& device, auto& array) {
+            if (array.empty()) return;
+            const size_t pitch = size_t(m.filmWidth) * sizeof(array[0]), first = size_t(tile.y0) * m.filmWidth + tile.x0;
+            URBIS_CUDA_CHECK(cudaMemcpy2D(array.data() + first, pitch, device.data() + first, pitch,
+                                          tile.width() * sizeof(array[0]), tile.height(), cudaMemcpyDeviceToHost));
+        },
+        m.film, host.arrays);
+}
+
 void GpuScene::drawPicture(FilmDisplay display, float exposureEv, bool denoised, uint8_t* rgba) {
     Impl& m = *impl_;
+    m.use();
     const FilmView film = m.filmView();
     const size_t pixels = size_t(film.width) * film.height;
     if (display != FilmDisplay::Image && !film.hasAovs())
@@ -351,6 +414,7 @@ void GpuScene::drawPicture(FilmDisplay display, float exposureEv, bool denoised,
 
 Rgb8Image GpuScene::readPicture() const {
     const Impl& m = *impl_;
+    m.use();
     return {m.filmWidth, m.filmHeight, m.picture.download()};
 }
 
@@ -363,6 +427,7 @@ LinearImage GpuScene::render(const Camera& camera, const RenderSettings& setting
 }
 
 std::vector<SurfaceHit> GpuScene::intersect(const std::vector<Ray>& rays) {
+    impl_->use();
     impl_->rays.upload(rays);
     impl_->launchTrace(false);
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());
@@ -370,6 +435,7 @@ std::vector<SurfaceHit> GpuScene::intersect(const std::vector<Ray>& rays) {
 }
 
 std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>& rays) {
+    impl_->use();
     impl_->rays.upload(rays);
     impl_->launchTrace(true);
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());
@@ -378,6 +444,7 @@ std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>& rays) {
 
 std::vector<float> GpuScene::timeTrace(const std::vector<Ray>& rays, bool shadow, int warmup, int repeats) {
     Impl& m = *impl_;
+    m.use();
     m.requireFree(rays.size() * (sizeof(Ray) + sizeof(SurfaceHit)), "the ray batch");
     m.rays.upload(rays);
     for (int i = 0; i < warmup; ++i) m.launchTrace(shadow);
@@ -394,6 +461,7 @@ std::vector<float> GpuScene::timeTrace(const std::vector<Ray>& rays, bool shadow
 
 std::vector<float> GpuScene::timeRender(const Camera& camera, const RenderSettings& settings, int warmup, int repeats) {
     Impl& m = *impl_;
+    m.use();
     setFilm(Film(settings.width, settings.height, false));
     const SampleRange samples{0, settings.spp};
     for (int i = 0; i < warmup; ++i) m.launchRender(camera, settings, samples);
@@ -411,6 +479,7 @@ std::vector<float> GpuScene::timeRender(const Camera& camera, const RenderSettin
 void GpuScene::renderPhotons(const Scene& host, const Camera& camera, const RenderSettings& settings, SampleRange samples,
                              RenderCounters& counters, PhotonTimings& timings) {
     Impl& m = *impl_;
+    m.use();
     if (!m.photonPasses) m.photonPasses = std::make_unique<GpuPhotonPasses>();
     counters = {};
     const uint64_t photonRaysBefore = timings.photonRays;

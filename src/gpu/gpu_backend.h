@@ -6,6 +6,7 @@
 #include "film/denoise_filter.h"
 #include "film/display_pixel.h"
 #include "film/film.h"
+#include "film/pixel_rect.h"
 #include "integrators/photon_timings.h"
 #include "integrators/render_counters.h"
 #include "math/ray.h"
@@ -31,8 +32,12 @@ struct GpuInfo {
     int computeMajor = 0, computeMinor = 0, multiprocessors = 0;
 };
 
-/// Probes device 0. Never throws; a missing driver or device is reported in `reason`.
-GpuInfo probeGpu();
+/// Probes CUDA device `device` (and makes it the calling thread's). Never throws; a missing driver or
+/// device is reported in `reason`.
+GpuInfo probeGpu(int device = 0);
+
+/// How many CUDA devices this machine has: 0 without a driver, a device or a CUDA build.
+int gpuDeviceCount();
 
 /// Device memory held by a GpuScene (bytes): the scene's arrays, the film (with the viewer's picture) and the ray buffers.
 struct GpuMemory {
@@ -46,9 +51,10 @@ struct GpuMemory {
 /// InputError with a one-line message naming the CUDA call and its error string.
 class GpuScene {
 public:
-    /// Uploads `scene` to device 0 after checking with cudaMemGetInfo that it fits (with
-    /// `extraBytes` more for film or ray buffers the caller will need).
-    static std::unique_ptr<GpuScene> upload(const Scene& scene, size_t extraBytes = 0);
+    /// Uploads `scene` to CUDA device `device` after checking with cudaMemGetInfo that it fits (with
+    /// `extraBytes` more for film or ray buffers the caller will need). Every call on the GpuScene
+    /// works on that device, from whichever host thread makes it.
+    static std::unique_ptr<GpuScene> upload(const Scene& scene, size_t extraBytes = 0, int device = 0);
     ~GpuScene();
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;
@@ -60,11 +66,21 @@ public:
     /// tracer's kernel, then the AOV pass's when the film keeps AOVs. The film must be
     /// settings.width x settings.height. counters.seconds is the kernels' time (CUDA events).
     void render(const Camera& camera, const RenderSettings& settings, SampleRange samples, RenderCounters& counters);
-    /// Denoises the device film in place, as denoiseCpu does the host film (the same per-pixel
+    /// Adds samples `samples` of the pixels in `tile` only, as render does for every pixel: a pixel's
+    /// bits do not depend on the rectangles the frame is rendered in (the sampler is keyed by pixel).
+    void render(const Camera& camera, const RenderSettings& settings, SampleRange samples, const PixelRect& tile,
+                RenderCounters& counters);
+    /// Uploads again what lightScene and relightWindows change of `scene` (the scene this GpuScene was
+    /// uploaded from, relit for another time of day): the walls' lit windows, the light list, the sky's
+    /// tables, the sun, sky and night records. The geometry and its BVH stay on the device as they are.
+    void relight(const Scene& scene);    /// Denoises the device film in place, as denoiseCpu does the host film (the same per-pixel
     /// passes of film/denoise_filter.h, one kernel each). The film must keep AOVs.
     void denoise(const DenoiseParams& params = {});
     /// Copies the device film into `film`.
     void readFilm(Film& film) const;
+    /// Copies the pixels of `tile` of every film array into the same rectangle of `film`, which has the
+    /// device film's size and layers (the rest of `film` is left as it is).
+    void readFilm(const PixelRect& tile, Film& film) const;
     /// Makes the 8-bit sRGB picture of the device film on the device (film/display_pixel.h: layer
     /// `display` at `exposureEv` stops), denoised first where `denoised` (the film's sums are kept, to
     /// go on adding samples), into `rgba`: device memory of width x height x 4 bytes, rows from the

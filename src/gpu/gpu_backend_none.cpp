@@ -11,11 +11,13 @@ const char* const kNoCuda = "urbis was built without CUDA";
 [[noreturn]] void noCuda() { throw InputError(kNoCuda, FailureKind::Device); }
 } // namespace
 
-GpuInfo probeGpu() {
+GpuInfo probeGpu(int) {
     GpuInfo info;
     info.reason = kNoCuda;
     return info;
 }
+
+int gpuDeviceCount() { return 0; }
 
 struct GpuScene::Impl {
     GpuInfo info;
@@ -23,11 +25,14 @@ struct GpuScene::Impl {
 
 GpuScene::GpuScene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 GpuScene::~GpuScene() = default;
-std::unique_ptr<GpuScene> GpuScene::upload(const Scene&, size_t) { noCuda(); }
+std::unique_ptr<GpuScene> GpuScene::upload(const Scene&, size_t, int) { noCuda(); }
 void GpuScene::setFilm(const Film&) { noCuda(); }
 void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, RenderCounters&) { noCuda(); }
+void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, const PixelRect&, RenderCounters&) { noCuda(); }
+void GpuScene::relight(const Scene&) { noCuda(); }
 void GpuScene::denoise(const DenoiseParams&) { noCuda(); }
 void GpuScene::readFilm(Film&) const { noCuda(); }
+void GpuScene::readFilm(const PixelRect&, Film&) const { noCuda(); }
 void GpuScene::drawPicture(FilmDisplay, float, bool, uint8_t*) { noCuda(); }
 Rgb8Image GpuScene::readPicture() const { noCuda(); }
 LinearImage GpuScene::render(const Camera&, const RenderSettings&, RenderCounters&) { noCuda(); }

@@ -1,0 +1,172 @@
+// The GPU renders a frame in tiles (MPI ranks, several devices) and keeps one upload for a sequence:
+// tiles give the whole frame's pixels bit for bit, a relit scene renders as a fresh upload of it, and
+// `--devices 0,0` (two GpuScenes on one GPU, two host threads) writes the image of `--device cuda`.
+#include "gpu_test_support.h"
+#include "cli_support.h"
+#include "film_test_support.h"
+
+#include "citygen/city_mesher.h"
+#include "citygen/city_scene.h"
+#include "citygen/window_schedule.h"
+#include "cluster/tile_grid.h"
+#include "description/scene_lighting.h"
+#include "lights/light_build.h"
+#include "media/atmosphere_build.h"
+#include "osm/osm_import.h"
+#include "scene/camera_framing.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <fstream>
+
+using namespace urbis;
+using namespace urbis::test;
+
+namespace {
+
+/// The Bavarian village with procedural walls under the atmosphere, its sun at `sunElevation` degrees
+/// and its windows lit for `hour`, with the light list built; `camera` frames it.
+Scene litVillage(float sunElevation, float hour, const RenderSettings& settings, Camera& camera) {
+    CityModel city = importOsm(villageFile(), ImportOptions{});
+    CityMeshOptions options;
+    options.geometry = parseGeometryModes("procedural");
+    CityMesh mesh = meshCity(city, options);
+    Scene scene = buildCityScene(mesh);
+    camera = frameCity(mesh.cityBounds, 50.0f, float(settings.width) / float(settings.height));
+    scene.sky.model = SkyModel::Atmosphere;
+    scene.sun = makeSun(sunElevation, 140.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
+    relightWindows(scene, std::vector<WindowUse>(city.buildings.size() + 1, WindowUse::Residential), hour);
+    buildAtmosphere(scene);
+    buildLights(scene);
+    return scene;
+}
+
+/// filmSettings with the seed the tests below render at.
+RenderSettings smallSettings(uint32_t width, uint32_t height, uint32_t spp) {
+    RenderSettings settings = filmSettings(width, height, spp);
+    settings.seed = 5;
+    return settings;
+}
+
+/// The film of `samples` rendered on `gpu` in one launch.
+Film wholeFrame(GpuScene& gpu, const Camera& camera, const RenderSettings& settings, bool aovs) {
+    Film film(settings.width, settings.height, aovs);
+    RenderCounters counters;
+    gpu.setFilm(film);
+    gpu.render(camera, settings, {0, settings.spp}, counters);
+    gpu.readFilm(film);
+    return film;
+}
+
+} // namespace
+
+TEST(GpuTiles, TilesGiveTheWholeFramesPixelsBitForBit) {
+    URBIS_SKIP_WITHOUT_GPU();
+    const RenderSettings settings = smallSettings(150, 97, 8);   // tiles of 32 and ragged edges
+    Camera camera;
+    const Scene scene = litVillage(30.0f, 14.0f, settings, camera);
+    std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
+    const Film whole = wholeFrame(*gpu, camera, settings, true);
+
+    Film tiled(settings.width, settings.height, true);
+    gpu->setFilm(tiled);
+    uint64_t rays = 0;
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<PixelRect> tiles = tilesOf(settings.width, settings.height, 32);
+    for (auto it = tiles.rbegin(); it != tiles.rend(); ++it) {   // any order: the bits are the pixel's
+        RenderCounters counters;
+        gpu->render(camera, settings, {0, settings.spp}, *it, counters);
+        gpu->readFilm(*it, tiled);
+        rays += counters.rays;
+    }
+    std::printf("%zu tiles of 32 px: %.2f ms, %llu rays\n", tiles.size(),
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
+                (unsigned long long)rays);
+    expectSameFilmBits(whole, tiled);
+    EXPECT_GT(rays, size_t(settings.width) * settings.height * settings.spp);
+    RenderCounters outside;
+    EXPECT_THROW(gpu->render(camera, settings, {0, 1}, PixelRect{0, 0, 151, 10}, outside), std::invalid_argument);
+}
+
+TEST(GpuTiles, RelitSceneRendersAsAFreshUploadOfIt) {
+    URBIS_SKIP_WITHOUT_GPU();
+    const RenderSettings settings = smallSettings(96, 64, 4);
+    Camera camera;
+    Scene scene = litVillage(30.0f, 14.0f, settings, camera);
+    std::unique_ptr<GpuScene> kept = GpuScene::upload(scene);
+    const Film day = wholeFrame(*kept, camera, settings, false);
+
+    // Dusk: the sun low, the rooms of the evening lit, the sky's tables and the light list rebuilt.
+    const Scene dusk = litVillage(2.0f, 20.5f, settings, camera);
+    scene = dusk;
+    auto t0 = std::chrono::steady_clock::now();
+    kept->relight(scene);
+    const double relightMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    t0 = std::chrono::steady_clock::now();
+    std::unique_ptr<GpuScene> fresh = GpuScene::upload(dusk);
+    const double uploadMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("village: relight %.2f ms, fresh upload %.2f ms\n", relightMs, uploadMs);
+    const Film relit = wholeFrame(*kept, camera, settings, false);
+    expectSameFilmBits(wholeFrame(*fresh, camera, settings, false), relit);
+    EXPECT_NE(std::memcmp(day.arrays.radianceSum.data(), relit.arrays.radianceSum.data(),
+                          relit.arrays.radianceSum.size() * sizeof(Vec3f)), 0) << "the relit scene renders as the day";
+}
+
+namespace {
+const std::string kSmall = "render --width 150 --height 90 --spp 4 --buildings 60 ";
+} // namespace
+
+TEST(GpuTiles, TwoDevicesOnOneGpuWriteTheImageOfOne) {
+    URBIS_SKIP_WITHOUT_GPU();
+    auto dir = scratchDir("gpu_devices");
+    CommandResult one = runUrbis(kSmall + "--device cuda --denoise --out one.png", dir);
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    CommandResult two = runUrbis(kSmall + "--devices 0,0 --denoise --verbose --out two.png --stats two.json", dir);
+    ASSERT_EQ(two.exitCode, 0) << two.err;
+    EXPECT_EQ(readFile(dir / "one.png"), readFile(dir / "two.png")) << "the tiles of two devices are not the frame of one";
+    EXPECT_NE(two.err.find("#0, "), std::string::npos) << "names both devices:\n" << two.err;
+    EXPECT_NE(readFile(dir / "two.json").find("\"2 x "), std::string::npos) << "device_name counts the GPUs";
+    CommandResult single = runUrbis(kSmall + "--devices 0 --denoise --out single.png", dir);
+    ASSERT_EQ(single.exitCode, 0) << single.err;
+    EXPECT_EQ(readFile(dir / "one.png"), readFile(dir / "single.png")) << "--devices 0 is not --device cuda";
+}
+
+TEST(GpuTiles, SequenceOverTwoDevicesWritesTheFramesOfOne) {
+    URBIS_SKIP_WITHOUT_GPU();
+    auto dir = scratchDir("gpu_devices_frames");
+    // Four frames from afternoon to night: each frame relights the kept upload.
+    std::ofstream(dir / "anim.json") << R"({"source": {"buildings": 40, "seed": 3}, "integrator": {"spp": 2},
+        "film": {"width": 64, "height": 40}, "animation": {"fps": 1,
+        "camera": [{"time": 0, "position": [200, 100, 60], "target": [0, 10, 0]},
+                   {"time": 3, "position": [-150, 80, 120], "target": [0, 10, 0]}],
+        "time": [{"time": 0, "date": "2024-06-21T16:00+00:00"}, {"time": 3, "date": "2024-06-21T22:30+00:00"}]}})";
+    CommandResult one = runUrbis("render --scene anim.json --frames 0:3 --device cuda --out one/f%d.png", dir);
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    CommandResult two = runUrbis("render --scene anim.json --frames 0:3 --devices 0,0 --out two/f%d.png", dir);
+    ASSERT_EQ(two.exitCode, 0) << two.err;
+    for (int n = 0; n < 4; ++n) {
+        const std::string name = "f" + std::to_string(n) + ".png";
+        EXPECT_EQ(readFile(dir / "one" / name), readFile(dir / "two" / name)) << name;
+    }
+    // Frame 3 alone (a fresh upload, relit once) is frame 3 of the sequence (relit three times).
+    ASSERT_EQ(runUrbis("render --scene anim.json --frames 3 --device cuda --out alone/f%d.png", dir).exitCode, 0);
+    EXPECT_EQ(readFile(dir / "one" / "f3.png"), readFile(dir / "alone" / "f3.png"));
+}
+
+TEST(GpuTiles, BadDevicesSayWhyInOneLine) {
+    auto dir = scratchDir("gpu_devices_bad");
+    CommandResult missing = runUrbis(kSmall + "--devices 0,63", dir);
+    EXPECT_EQ(missing.exitCode, 4) << missing.err;
+    EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
+    EXPECT_NE(missing.err.find("--devices 0,63: "), std::string::npos) << missing.err;
+    CommandResult cpu = runUrbis(kSmall + "--devices 0 --device cpu", dir);
+    EXPECT_EQ(cpu.exitCode, 2) << cpu.err;
+    EXPECT_NE(cpu.err.find("not with --device cpu"), std::string::npos) << cpu.err;
+    CommandResult photons = runUrbis(kSmall + "--devices 0,0 --integrator photon-map", dir);
+    if (probeGpu().available) {
+        EXPECT_EQ(photons.exitCode, 2) << photons.err;
+        EXPECT_NE(photons.err.find("only the path integrator"), std::string::npos) << photons.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "urbis.png"));
+}
