@@ -53,7 +53,7 @@ struct Scene {
                        const std::vector<WallRecord>& walls = {}, WallTileSize tileSize = {},
                        const std::vector<GroundRecord>& grounds = {}, const std::vector<LampRecord>& lamps = {},
                        const std::vector<TreeRecord>& trees = {}, const TerrainField& terrain = {},
-                       const std::vector<PlanetRecord>& planets = {});
+                       const std::vector<PlanetRecord>& planets = {}, const std::vector<ForestRecord>& forests = {});
     SceneView view() const;
     SceneMemory memory() const;
 };
