@@ -5,10 +5,10 @@
 #include "accel/bvh_traverse.h"
 #include "geometry/scene_intersect.h"
 #include "nature/forest_records.h"
-#include "nature/tree_records.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "scene/tree_shape.h"
+#include "tree_test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -78,12 +78,6 @@ void expectWalkFindsEveryTree(const ForestRecord& f, int rays) {
     EXPECT_GT(hits, rays / 3);
 }
 
-Scene forestScene(const ForestRecord& forest) {
-    std::vector<Material> materials{Material{Vec3f{0.2f, 0.2f, 0.18f}}};
-    for (const Material& m : treeMaterials(TreeOptions{})) materials.push_back(m);
-    return Scene::build(TriangleMesh{}, materials, {}, {}, {GroundRecord::around(0, 0, 0, 0)}, {}, {}, {}, {}, {forest});
-}
-
 /// The share of a 96 x 54 grid of `camera`'s rays between `from` and `to` (shares of the image's
 /// height from the top) that hit a forest tree.
 double treeShare(const SceneView& view, const Camera& camera, float from, float to) {
@@ -136,7 +130,7 @@ TEST(Forest, MemoryDoesNotGrowWithItsArea) {
     const ForestRecord small = forestRecordOf(-1000.0f, -1000.0f, 1000.0f, 1000.0f, options, 1, 1);
     const ForestRecord large = forestRecordOf(-10000.0f, -10000.0f, 10000.0f, 10000.0f, options, 1, 1);
     const uint64_t smallTrees = forestTreeCount(small), largeTrees = forestTreeCount(large);
-    const Scene a = forestScene(small), b = forestScene(large);
+    const Scene a = test::forestScene(small), b = test::forestScene(large);
     std::printf("forest of %llu trees: %zu bytes; of %llu trees: %zu bytes\n", (unsigned long long)smallTrees,
                 a.memory().total(), (unsigned long long)largeTrees, b.memory().total());
     EXPECT_NEAR(double(largeTrees) / double(smallTrees), 100.0, 1.0);
@@ -146,7 +140,7 @@ TEST(Forest, MemoryDoesNotGrowWithItsArea) {
 }
 
 TEST(Forest, RunsToTheHorizonAndCoversTheGroundFromAbove) {
-    const Scene scene = forestScene(forestRecordOf(-20000.0f, -20000.0f, 20000.0f, 20000.0f, TreeOptions{}, 1, 1));
+    const Scene scene = test::forestScene(forestRecordOf(-20000.0f, -20000.0f, 20000.0f, 20000.0f, TreeOptions{}, 1, 1));
     const SceneView view = scene.view();
     // At street level, looking level: the forest closes the horizon (the image's middle): every ray
     // within a tenth of the image's height around it meets a tree.
