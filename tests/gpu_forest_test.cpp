@@ -3,7 +3,6 @@
 // forest to the horizon path traced on the GPU matches the CPU's image.
 #include "gpu_test_support.h"
 
-#include "math/hash.h"
 #include "nature/forest_records.h"
 #include "tree_test_scenes.h"
 
@@ -12,18 +11,9 @@ using namespace urbis;
 TEST(GpuForest, RaysAtAForestHitTheSameTreeAtTheSameDistance) {
     URBIS_SKIP_WITHOUT_GPU();
     const Scene scene = test::forestScene(forestRecordOf(-300.0f, -300.0f, 300.0f, 300.0f, TreeOptions{}, 1, 1));
-    std::vector<Ray> rays;
-    HashStream rng{78u};
-    for (int i = 0; i < 200000; ++i) {
-        const Vec3f target{rng.uniform(-300.0f, 300.0f), rng.uniform(0.0f, 12.0f), rng.uniform(-300.0f, 300.0f)};
-        const Vec3f origin{rng.uniform(-500.0f, 500.0f), rng.uniform(0.5f, 200.0f), rng.uniform(-500.0f, 500.0f)};
-        rays.push_back(Ray{origin, target - origin});
-    }
-    const test::HitParity parity = test::traceOnBoth(scene, rays, kPrimKindOf<ForestRecord>, "forest");
-    EXPECT_GT(parity.kindHits, rays.size() / 2);
-    EXPECT_EQ(parity.differ, 0u);
-    EXPECT_EQ(parity.otherIndex, 0u);
-    EXPECT_EQ(parity.occlusions, 0u);
+    const std::vector<Ray> rays = test::raysBetweenBoxes({-500.0f, 0.5f, -500.0f}, {500.0f, 200.0f, 500.0f},
+                                                         {-300.0f, 0.0f, -300.0f}, {300.0f, 12.0f, 300.0f}, 200000, 78u);
+    test::expectSameHits(scene, rays, kPrimKindOf<ForestRecord>, "forest", 0.5);
 }
 
 // Metric: per-pixel luminance of the linear images, as the trees' city image (gpu_trees_test.cpp):

@@ -6,6 +6,7 @@
 #include "film/image.h"
 #include "geometry/scene_intersect.h"
 #include "gpu/gpu_backend.h"
+#include "math/hash.h"
 
 #include <gtest/gtest.h>
 
@@ -148,6 +149,33 @@ inline HitParity traceOnBoth(const Scene& scene, const std::vector<Ray>& rays, u
     std::printf("%s on both backends: %zu rays, %zu hit the kind, %zu differ, %zu ties, %zu occlusions differ\n", label,
                 rays.size(), p.kindHits, p.differ, p.otherIndex, p.occlusions);
     return p;
+}
+
+/// `count` rays from random points of the box [originLo, originHi] towards random points of
+/// [targetLo, targetHi] (each target drawn before its origin), seeded.
+inline std::vector<Ray> raysBetweenBoxes(Vec3f originLo, Vec3f originHi, Vec3f targetLo, Vec3f targetHi, int count,
+                                         uint32_t seed) {
+    std::vector<Ray> rays;
+    HashStream rng{seed};
+    for (int i = 0; i < count; ++i) {
+        const Vec3f target{rng.uniform(targetLo.x, targetHi.x), rng.uniform(targetLo.y, targetHi.y),
+                           rng.uniform(targetLo.z, targetHi.z)};
+        const Vec3f origin{rng.uniform(originLo.x, originHi.x), rng.uniform(originLo.y, originHi.y),
+                           rng.uniform(originLo.z, originHi.z)};
+        rays.push_back(Ray{origin, target - origin});
+    }
+    return rays;
+}
+
+/// traceOnBoth, expecting the same hit (kind, distance, record) and occlusion for every ray and at
+/// least `minShare` of them hitting `kind`.
+inline void expectSameHits(const Scene& scene, const std::vector<Ray>& rays, uint32_t kind, const char* label,
+                           double minShare) {
+    const HitParity parity = traceOnBoth(scene, rays, kind, label);
+    EXPECT_GT(double(parity.kindHits), minShare * double(rays.size()));
+    EXPECT_EQ(parity.differ, 0u);
+    EXPECT_EQ(parity.otherIndex, 0u);
+    EXPECT_EQ(parity.occlusions, 0u);
 }
 
 } // namespace urbis::test
