@@ -101,7 +101,8 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "terrain.lei", "terrain.lei.a", "terrain.lei.b", "terrain.lei.c", "terrain.lei.bisections",
         "terrain.reference_step", "water", "water.enabled", "water.max_depth", "water.shelf_width", "water.absorption",
         "water.bed_albedo", "water.wind_speed", "water.wind_from", "trees", "trees.enabled", "trees.seed",
-        "trees.forest_density", "trees.park_density", "trees.scrub_density", "trees.outer_forest", "trees.clearance",
+        "trees.forest_density", "trees.park_density", "trees.scrub_density", "trees.outer_forest", "trees.outer_forest_cell",
+        "trees.outer_forest_density", "trees.clearance",
         "trees.default_height", "trees.size_variation", "trees.conifer_share", "trees.roughness", "trees.lumps",
         "trees.season", "trees.bark_albedo", "trees.leaf_albedo", "trees.needle_albedo", "trees.autumn_albedo",
         "animation", "animation.fps", "animation.duration", "animation.camera", "animation.time"};

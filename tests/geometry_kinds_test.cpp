@@ -54,7 +54,7 @@ void expectUnitFrame(const SurfaceHit& h) {
 } // namespace
 
 TEST(PrimKinds, ListIndicesAndCosts) {
-    EXPECT_EQ(kPrimKindCount, 7u);
+    EXPECT_EQ(kPrimKindCount, 8u);
     EXPECT_EQ(kPrimKindOf<Triangle>, 0u);
     EXPECT_EQ(kPrimKindOf<WallRecord>, 1u);
     EXPECT_EQ(kPrimKindOf<GroundRecord>, 2u);
@@ -65,6 +65,8 @@ TEST(PrimKinds, ListIndicesAndCosts) {
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<TreeRecord>>);
     EXPECT_EQ(kPrimKindOf<PlanetRecord>, 6u);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<PlanetRecord>>);
+    EXPECT_EQ(kPrimKindOf<ForestRecord>, 7u);
+    EXPECT_TRUE(kCostlyKind<kPrimKindOf<ForestRecord>>);
     EXPECT_FALSE(kCostlyKind<kPrimKindOf<Triangle>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<WallRecord>>);
     EXPECT_TRUE(kCostlyKind<kPrimKindOf<LampRecord>>);
@@ -154,7 +156,7 @@ TEST(SceneArrays, MemoryListsEveryArrayOnce) {
         sum += bytes;
         ++arrays;
     });
-    EXPECT_EQ(arrays, 29u);   // the seven kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples, the clouds' layer and three tables
+    EXPECT_EQ(arrays, 30u);   // the eight kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples, the clouds' layer and three tables
     EXPECT_EQ(sum, memory.total());
     EXPECT_EQ(memory.grounds, sizeof(GroundRecord));
     EXPECT_EQ(memory.walls, scene.walls.size() * sizeof(WallRecord));

@@ -6,6 +6,7 @@
 #include "film/image.h"
 #include "geometry/scene_intersect.h"
 #include "gpu/gpu_backend.h"
+#include "math/hash.h"
 
 #include <gtest/gtest.h>
 
@@ -88,6 +89,38 @@ inline void expectParity(const LuminanceParity& parity, double tolerance, double
     EXPECT_LE(double(parity.off), offFraction * double(parity.pixels));
 }
 
+/// Parity of renders whose paths part ways between the backends (clouds: every tracking step compares
+/// a random number with a density the GPU's approximate arithmetic rounds otherwise, and a parted path
+/// differs as an independent sample does): renders `camera`'s view of `scene` on both and once more on
+/// the CPU with the next seed; the images' mean luminance must agree within 1 % and the mean absolute
+/// pixel difference be at most 1.15 times the two CPU renders' (the GPU parts from the CPU no more
+/// than an independent render does).
+inline void expectParityOfIndependentRenders(const Scene& scene, const Camera& camera, const RenderSettings& settings,
+                                             const char* label) {
+    RenderCounters cpuCounters, gpuCounters;
+    const LinearImage cpu = renderCpu(scene.view(), camera, settings, false, cpuCounters);
+    const LinearImage img = GpuScene::upload(scene)->render(camera, settings, gpuCounters);
+    RenderSettings otherSeed = settings;
+    otherSeed.seed = settings.seed + 1;
+    const LinearImage independent = renderCpu(scene.view(), camera, otherSeed, false, cpuCounters);
+    ASSERT_EQ(img.pixels.size(), cpu.pixels.size());
+    double sumCpu = 0, sumGpu = 0, sumDiff = 0, sumNoise = 0;
+    for (size_t i = 0; i < cpu.pixels.size(); ++i) {
+        const double a = luminance(cpu.pixels[i]), b = luminance(img.pixels[i]);
+        ASSERT_TRUE(std::isfinite(b)) << "pixel " << i;
+        sumCpu += a;
+        sumGpu += b;
+        sumDiff += std::fabs(a - b);
+        sumNoise += std::fabs(a - double(luminance(independent.pixels[i])));
+    }
+    const double n = double(cpu.pixels.size()), mean = sumCpu / n;
+    std::printf("%s parity: mean luminance cpu %.5f gpu %.5f, mean |diff| %.3g (%.2f%%), between CPU seeds %.3g\n", label,
+                mean, sumGpu / n, sumDiff / n, 100.0 * sumDiff / n / mean, sumNoise / n);
+    ASSERT_GT(mean, 1e-4) << "the image is black";
+    EXPECT_NEAR(sumGpu / n, mean, 0.01 * mean);
+    EXPECT_LT(sumDiff, 1.15 * sumNoise);
+}
+
 /// How the closest hits and occlusions of a ray batch compare between the backends.
 struct HitParity {
     size_t kindHits = 0;     ///< CPU hits of the kind asked about
@@ -116,6 +149,33 @@ inline HitParity traceOnBoth(const Scene& scene, const std::vector<Ray>& rays, u
     std::printf("%s on both backends: %zu rays, %zu hit the kind, %zu differ, %zu ties, %zu occlusions differ\n", label,
                 rays.size(), p.kindHits, p.differ, p.otherIndex, p.occlusions);
     return p;
+}
+
+/// `count` rays from random points of the box [originLo, originHi] towards random points of
+/// [targetLo, targetHi] (each target drawn before its origin), seeded.
+inline std::vector<Ray> raysBetweenBoxes(Vec3f originLo, Vec3f originHi, Vec3f targetLo, Vec3f targetHi, int count,
+                                         uint32_t seed) {
+    std::vector<Ray> rays;
+    HashStream rng{seed};
+    for (int i = 0; i < count; ++i) {
+        const Vec3f target{rng.uniform(targetLo.x, targetHi.x), rng.uniform(targetLo.y, targetHi.y),
+                           rng.uniform(targetLo.z, targetHi.z)};
+        const Vec3f origin{rng.uniform(originLo.x, originHi.x), rng.uniform(originLo.y, originHi.y),
+                           rng.uniform(originLo.z, originHi.z)};
+        rays.push_back(Ray{origin, target - origin});
+    }
+    return rays;
+}
+
+/// traceOnBoth, expecting the same hit (kind, distance, record) and occlusion for every ray and at
+/// least `minShare` of them hitting `kind`.
+inline void expectSameHits(const Scene& scene, const std::vector<Ray>& rays, uint32_t kind, const char* label,
+                           double minShare) {
+    const HitParity parity = traceOnBoth(scene, rays, kind, label);
+    EXPECT_GT(double(parity.kindHits), minShare * double(rays.size()));
+    EXPECT_EQ(parity.differ, 0u);
+    EXPECT_EQ(parity.otherIndex, 0u);
+    EXPECT_EQ(parity.occlusions, 0u);
 }
 
 } // namespace urbis::test

@@ -6,7 +6,6 @@
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
 #include "layout/city_layout.h"
-#include "math/hash.h"
 #include "scene/camera_framing.h"
 #include "tree_test_scenes.h"
 
@@ -15,18 +14,9 @@ using namespace urbis;
 TEST(GpuTrees, RaysAtAGroveHitTheSameTreeAtTheSameDistance) {
     URBIS_SKIP_WITHOUT_GPU();
     const Scene scene = test::groveScene(6, false);
-    std::vector<Ray> rays;
-    HashStream rng{77u};
-    for (int i = 0; i < 200000; ++i) {
-        const Vec3f target{rng.uniform(-28.0f, 28.0f), rng.uniform(0.0f, 12.0f), rng.uniform(-28.0f, 28.0f)};
-        const Vec3f origin{rng.uniform(-60.0f, 60.0f), rng.uniform(0.5f, 40.0f), rng.uniform(-60.0f, 60.0f)};
-        rays.push_back(Ray{origin, target - origin});
-    }
-    const test::HitParity parity = test::traceOnBoth(scene, rays, kPrimKindOf<TreeRecord>, "trees");
-    EXPECT_GT(parity.kindHits, rays.size() / 4);
-    EXPECT_EQ(parity.differ, 0u);
-    EXPECT_EQ(parity.otherIndex, 0u);
-    EXPECT_EQ(parity.occlusions, 0u);
+    const std::vector<Ray> rays = test::raysBetweenBoxes({-60.0f, 0.5f, -60.0f}, {60.0f, 40.0f, 60.0f}, {-28.0f, 0.0f, -28.0f},
+                                                         {28.0f, 12.0f, 28.0f}, 200000, 77u);
+    test::expectSameHits(scene, rays, kPrimKindOf<TreeRecord>, "trees", 0.25);
 }
 
 TEST(GpuTrees, GeneratedCityWithTreesMatchesTheCpuAt64Spp) {

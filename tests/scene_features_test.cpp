@@ -7,6 +7,7 @@
 #include "gpu/render_variants.h"
 #include "integrators/integrator.h"
 #include "media/cloud_build.h"
+#include "nature/forest_records.h"
 
 #include <gtest/gtest.h>
 
@@ -28,7 +29,11 @@ TEST(SceneFeatures, EverySetHasAKernelThatHoldsItWithTheScenesTraversal) {
 TEST(SceneFeatures, ScenesPickTheKernelsMeantForThem) {
     const Scene grove = test::groveScene(3, false), twin = test::groveScene(3, true);
     EXPECT_EQ(grove.view().features, kKindFeature<TreeRecord> | kKindFeature<GroundRecord>);
-    EXPECT_EQ(kRenderVariants[renderVariantFor(grove.view().features)], kCityFeatures | kKindFeature<TreeRecord>);
+    EXPECT_EQ(kRenderVariants[renderVariantFor(grove.view().features)],
+              kCityFeatures | kKindFeature<TreeRecord> | kKindFeature<ForestRecord>);
+    const Scene forest = test::forestScene(forestRecordOf(-100.0f, -100.0f, 100.0f, 100.0f, TreeOptions{}, 1, 1));
+    EXPECT_EQ(forest.view().features, kKindFeature<ForestRecord> | kKindFeature<GroundRecord>);
+    EXPECT_EQ(renderVariantFor(forest.view().features), renderVariantFor(grove.view().features));
     EXPECT_EQ(twin.view().features, kKindFeature<Triangle> | kKindFeature<GroundRecord>);
     EXPECT_EQ(kRenderVariants[renderVariantFor(twin.view().features)], kTriangleCityFeatures);
     Scene cloudy = test::groveScene(3, false);

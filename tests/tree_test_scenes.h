@@ -1,5 +1,5 @@
 // A grove for the tree tests: broadleaves and conifers of several sizes on a ground plane, made by
-// the same path as a city's trees (treeRecordOf, or the twin's meshTree).
+// the same path as a city's trees (treeRecordOf, or the twin's meshTree); and a forest on its own.
 #pragma once
 
 #include "nature/tree_mesher.h"
@@ -36,6 +36,15 @@ inline Scene groveScene(int rows, bool twin) {
         for (const TreeRecord& r : records) meshTree(r, mesh);
     Scene scene = Scene::build(mesh, materials, {}, {}, {GroundRecord::around(0, 0, 0, 0)}, {},
                                twin ? std::vector<TreeRecord>{} : records);
+    scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
+    return scene;
+}
+
+/// A forest alone on the ground plane (material 0), its trees' materials after it (material 1 on), in sunlight.
+inline Scene forestScene(const ForestRecord& forest) {
+    std::vector<Material> materials{Material{Vec3f{0.2f, 0.2f, 0.18f}}};
+    for (const Material& m : treeMaterials(TreeOptions{})) materials.push_back(m);
+    Scene scene = Scene::build(TriangleMesh{}, materials, {}, {}, {GroundRecord::around(0, 0, 0, 0)}, {}, {}, {}, {}, {forest});
     scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     return scene;
 }

@@ -1,8 +1,11 @@
 // Where trees stand: on the real extracts (the Bavarian village, San Francisco, London) no placed
 // tree stands on a carriageway, in a building or in water, checked by brute force over the model's
 // roads, footprints and water areas (not through the placement's own grids); filled trees keep their
-// clearance; woods and parks get filled; tree rows become trees; placement is deterministic.
+// clearance; woods and parks get filled; tree rows become trees; placement is deterministic; the
+// forest beyond the city (a ForestRecord's cells) rings it and keeps out of its roads, buildings and water.
+#include "nature/forest_records.h"
 #include "nature/tree_placement.h"
+#include "scene/forest_cells.h"
 #include "model/polygon_ops.h"
 #include "osm/osm_import.h"
 #include "osm/tree_rows.h"
@@ -72,6 +75,39 @@ void expectTreesStandFree(const std::string& path, bool expectFilled) {
     const std::vector<Tree> second = placeTrees(city, options, again);
     ASSERT_EQ(second.size(), trees.size());
     for (size_t i = 0; i < trees.size(); ++i) EXPECT_EQ(second[i].position.x, trees[i].position.x);
+}
+
+/// Calls f(model position) for every tree of `forests`, cell by cell (forestFoot).
+template <typename F>
+void forEachForestTree(const std::vector<ForestRecord>& forests, F&& f) {
+    for (const ForestRecord& forest : forests)
+        for (int32_t k = int32_t(std::floor(forest.z0 / forest.cell)); k <= int32_t(std::floor(forest.z1 / forest.cell)); ++k)
+            for (int32_t i = int32_t(std::floor(forest.x0 / forest.cell)); i <= int32_t(std::floor(forest.x1 / forest.cell)); ++i) {
+                HashStream rng;
+                float x, z;
+                if (forestFoot(forest, i, k, rng, x, z)) f(Vec2d{x, -z});
+            }
+}
+
+/// The forest ring around the extract at `path` (its first 30 m, where the city is nearest): no tree
+/// on a carriageway or its sidewalk, in a building or in water, by brute force over the model.
+void expectForestStandsFree(const std::string& path) {
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found, skipping";
+    const CityModel city = importOsm(path, ImportOptions{});
+    TreeOptions options;
+    options.outerForest = 30.0f;
+    const std::vector<ForestRecord> forests = outerForestRecords(city, options, 0, 0);
+    ASSERT_EQ(forests.size(), 4u);
+    size_t trees = 0;
+    forEachForestTree(forests, [&](Vec2d p) {
+        ++trees;
+        EXPECT_GE(carriagewayMargin(city, p), options.clearance + kTreeSidewalkAllowance - 1e-3)
+            << path << ": a forest tree at " << p.x << ", " << p.y << " on a road";
+        EXPECT_FALSE(inAny(city, p, false)) << path << ": a forest tree at " << p.x << ", " << p.y << " in a building";
+        EXPECT_FALSE(inAny(city, p, true)) << path << ": a forest tree at " << p.x << ", " << p.y << " in water";
+    });
+    std::printf("%s: %zu trees in 30 m of forest around it\n", path.c_str(), trees);
+    EXPECT_GT(trees, 500u);
 }
 
 std::string sharedData(const char* name) { return std::string(URBIS_SHARED_DATA) + "/" + name; }
@@ -168,19 +204,41 @@ TEST(TreePlacement, OuterForestRingsTheCityAndStaysOutOfIt) {
     CityModel city;
     Road road;
     road.centerline = {{0, 0}, {200, 0}};
+    road.width = 8.0;
     city.roads.push_back(road);
     Building b;
     b.footprint.outer = {{50, 20}, {150, 20}, {150, 100}, {50, 100}};
     city.buildings.push_back(b);
     TreeOptions options;
-    options.outerForest = 40.0f;
-    std::map<std::string, uint64_t> dropped;
-    const std::vector<Tree> trees = placeTrees(city, options, dropped);
-    // The ring: (280 x 180) - (200 x 100) = 30400 m^2, less the road's corridor where it meets the ring.
-    EXPECT_NEAR(double(trees.size()), 30400.0 * 300.0 / 10000.0, 30400.0 * 300.0 / 10000.0 * 0.2);
-    for (const Tree& t : trees)
-        EXPECT_FALSE(t.position.x > 0 && t.position.x < 200 && t.position.y > 0 && t.position.y < 100)
-            << "a tree inside the city's box at " << t.position.x << ", " << t.position.y;
+    options.outerForest = 400.0f;
+    const std::vector<ForestRecord> forests = outerForestRecords(city, options, 7, 3);
+    ASSERT_EQ(forests.size(), 4u);
+    // The city's extent: the box (0, 0)-(200, 100) grown by the road's half width, a sidewalk and the clearance.
+    const double margin = 4.0 + kTreeSidewalkAllowance + options.clearance;
+    uint64_t trees = 0;
+    forEachForestTree(forests, [&](Vec2d p) {
+        ++trees;
+        EXPECT_FALSE(p.x > -margin && p.x < 200 + margin && p.y > -margin && p.y < 100 + margin)
+            << "a tree inside the city's extent at " << p.x << ", " << p.y;
+    });
+    uint64_t counted = 0;
+    for (const ForestRecord& f : forests) counted += forestTreeCount(f);
+    EXPECT_EQ(trees, counted);
+    const double ring = (200 + 2 * (margin + 400)) * (100 + 2 * (margin + 400)) - (200 + 2 * margin) * (100 + 2 * margin);
+    const double expected = ring * options.outerForestDensity / 10000.0;
+    EXPECT_NEAR(double(trees), expected, 4.0 * std::sqrt(expected));
     options.outerForest = 0.0f;
-    EXPECT_TRUE(placeTrees(city, options, dropped).empty());
+    EXPECT_TRUE(outerForestRecords(city, options, 7, 3).empty());
+}
+
+TEST(TreePlacement, BavarianVillageForestStandsOnNoRoadBuildingOrWater) {
+    expectForestStandsFree(std::string(URBIS_OSMNX_DATA) + "/planet_10.068,48.135_10.071,48.137.osm");
+}
+
+TEST(TreePlacement, SanFranciscoForestStandsOnNoRoadBuildingOrWater) {
+    expectForestStandsFree(sharedData("sf_downtown_2023.osm.pbf"));
+}
+
+TEST(TreePlacement, LondonForestStandsOnNoRoadBuildingOrWater) {
+    expectForestStandsFree(sharedData("london_city_2020.osm.pbf"));
 }

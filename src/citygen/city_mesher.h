@@ -12,6 +12,7 @@
 #include "scene/lamp_record.h"
 #include "scene/road_segment.h"
 #include "nature/tree_options.h"
+#include "scene/forest_record.h"
 #include "scene/tree_record.h"
 #include "streets/traffic_side.h"
 #include "streets/water_options.h"
@@ -63,6 +64,7 @@ struct CityMesh {
     uint64_t holesDropped = 0;                 ///< footprint holes the cleaning dropped (citygen/footprint_cleaning.h)
     std::map<std::string, uint64_t> roofFallbacks;  ///< roofs meshed as a simpler shape (unknown shape -> flat, ...), by reason
     std::vector<TreeRecord> trees;             ///< sphere-traced trees (empty with trees=triangles)
+    std::vector<ForestRecord> forests;         ///< the forest beyond the city (trees.outer_forest), procedural in any mode
 };
 
 /// Meshes the whole city (object id of building i is i + 1; 0 is the ground) in parallel; the

@@ -158,6 +158,13 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
     }
     for (LampRecord& lamp : mesh.lamps) lamp.base.y += terrain.heightAt(lamp.base.x, lamp.base.z);
     for (TreeRecord& tree : mesh.trees) tree.base.y += terrain.heightAt(tree.base.x, tree.base.z);
+    // The forest's trees stand on the terrain where the ray finds them; around the grid the heights
+    // fall to the flat ground at 0, never below it.
+    for (ForestRecord& forest : mesh.forests) {
+        forest.onTerrain = 1;
+        forest.groundLo = std::min(0.0f, terrain.record.yMin);
+        forest.groundHi = std::max(0.0f, terrain.record.yMax);
+    }
     // The framing follows the ground under each piece; the city's bounds take every building's lift.
     for (Bounds3f& piece : mesh.framingPieces) {
         if (piece.empty()) continue;

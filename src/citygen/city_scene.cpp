@@ -17,7 +17,7 @@ Scene buildCityScene(const CityMesh& mesh, WallTileSize tileSize, Vec3f groundCe
     const GroundRecord ground = GroundRecord::around(groundCentre.x, groundCentre.z, 0.0f, mesh.groundMaterial);
     Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, tileSize,
                                terrain.empty() ? std::vector{ground} : groundAround(ground, primBounds(terrain.record)),
-                               mesh.lamps, mesh.trees, terrain);
+                               mesh.lamps, mesh.trees, terrain, {}, mesh.forests);
     scene.roadSegments = mesh.roadSegments;
     return scene;
 }

@@ -1,6 +1,7 @@
 #include "citygen/city_trees.h"
 
 #include "math/hash.h"
+#include "nature/forest_records.h"
 #include "nature/tree_mesher.h"
 #include "nature/tree_placement.h"
 #include "nature/tree_records.h"
@@ -11,11 +12,15 @@ namespace urbis {
 
 void addCityTrees(const CityModel& city, const CityMeshOptions& options, uint32_t firstObject, CityMesh& out) {
     const std::vector<Tree> trees = placeTrees(city, options.trees, out.dropped);
-    out.streetCounts["trees"] = trees.size();
-    if (trees.empty()) return;
-    const uint32_t firstMaterial = uint32_t(out.materials.size());
-    for (const Material& m : treeMaterials(options.trees)) out.materials.push_back(m);
     constexpr uint32_t kLastObject = (1u << 24) - 1;
+    const uint32_t firstMaterial = uint32_t(out.materials.size());
+    const uint32_t forestObject = std::min<uint64_t>(uint64_t(firstObject) + trees.size(), kLastObject);
+    out.forests = outerForestRecords(city, options.trees, forestObject, firstMaterial);
+    uint64_t forestTrees = 0;
+    for (const ForestRecord& forest : out.forests) forestTrees += forestTreeCount(forest);
+    out.streetCounts["trees"] = trees.size() + forestTrees;
+    if (trees.empty() && out.forests.empty()) return;
+    for (const Material& m : treeMaterials(options.trees)) out.materials.push_back(m);
     const bool twin = options.geometry.trees != Representation::Procedural;
     size_t triangles = 0;
     for (size_t i = 0; i < trees.size(); ++i) {

@@ -9,9 +9,11 @@
 namespace urbis {
 
 /// Adds the trees of `city` to `out`: records in out.trees (geometry trees=procedural) or the twin's
-/// triangles in out.mesh (trianglesByKind["trees"]); streetCounts["trees"] the trees made; mapped
-/// trees left out go to out.dropped. Object ids from `firstObject` up, one per tree (the last id of
-/// TriangleInfo's 24 bits is shared beyond that).
+/// triangles in out.mesh (trianglesByKind["trees"]), and the forest beyond the city to out.forests
+/// (procedural in either mode: its trees are cells, not records); streetCounts["trees"] the trees made,
+/// the forest's counted cell by cell; mapped trees left out go to out.dropped. Object ids from
+/// `firstObject` up, one per tree, then one for the whole forest (the last id of TriangleInfo's 24
+/// bits is shared beyond that).
 void addCityTrees(const CityModel& city, const CityMeshOptions& options, uint32_t firstObject, CityMesh& out);
 
 } // namespace urbis

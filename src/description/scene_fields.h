@@ -130,7 +130,9 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.number("forest_density", d.trees.forestDensity, 0.0f, 5000.0f);
         v.number("park_density", d.trees.parkDensity, 0.0f, 5000.0f);
         v.number("scrub_density", d.trees.scrubDensity, 0.0f, 5000.0f);
-        v.number("outer_forest", d.trees.outerForest, 0.0f, 20000.0f);
+        v.number("outer_forest", d.trees.outerForest, 0.0f, 30000.0f);
+        v.number("outer_forest_cell", d.trees.outerForestCell, 1.0f, 100.0f);
+        v.number("outer_forest_density", d.trees.outerForestDensity, 0.0f, 10000.0f);
         v.number("clearance", d.trees.clearance, 0.0f, 50.0f);
         v.number("default_height", d.trees.defaultHeight, 1.0f, 150.0f);
         v.number("size_variation", d.trees.sizeVariation, 0.0f, 0.9f);

@@ -6,6 +6,7 @@
 // picks them up.
 #pragma once
 
+#include "geometry/forest_kind.h"
 #include "geometry/ground_intersect.h"
 #include "geometry/lamp_kind.h"
 #include "geometry/terrain_intersect.h"

@@ -49,7 +49,7 @@ struct TraceRay {
 struct PrimHit {
     uint32_t slot = 0xffffffffu;
     float t = 3.0e38f;
-    float u = 0, v = 0;                       ///< a triangle's barycentrics
+    float u = 0, v = 0;                       ///< a triangle's barycentrics; a forest's tree's cell (i, k)
     uint32_t material = 0;                    ///< a wall part's material
     uint32_t axis = 0;                        ///< a wall part's normal axis in wall space
     SurfacePart part = SurfacePart::Whole;    ///< a wall's part

@@ -20,7 +20,7 @@ inline constexpr SceneFeatures kCityFeatures = kTriangleCityFeatures | kKindFeat
 inline constexpr SceneFeatures kRenderVariants[] = {
     kTriangleCityFeatures,
     kCityFeatures,
-    kCityFeatures | kKindFeature<TreeRecord>,
+    kCityFeatures | kKindFeature<TreeRecord> | kKindFeature<ForestRecord>,
     kAllFeatures & ~kCostlyKindFeatures,
     kAllFeatures,
 };

@@ -21,9 +21,12 @@ struct TreeOptions {
     float forestDensity = 300.0f;
     float parkDensity = 30.0f;
     float scrubDensity = 200.0f;
-    /// Metres of forest (at forestDensity) filled around the city: a ring beyond the box of its roads and
-    /// buildings, the same seeded jittered grid keyed by cell, so it extends without a seam. 0: none.
+    /// Metres of forest around the city: a ring beyond its extent, by domain repetition (a ForestRecord:
+    /// cells of outerForestCell metres, each holding a hashed, jittered tree with a probability that
+    /// makes outerForestDensity trees per hectare, at most one a cell). 0: none.
     float outerForest = 0.0f;
+    float outerForestCell = 6.0f;
+    float outerForestDensity = 250.0f;
     float clearance = 1.0f;          ///< m from a filled tree's trunk to a road's edge (sidewalks included), a building or water
     float defaultHeight = 10.0f;     ///< m, of a filled-in tree (a mapped tree without `height` keeps the import's)
     float sizeVariation = 0.25f;     ///< relative: untagged heights and crowns vary by up to this, seeded

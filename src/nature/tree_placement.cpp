@@ -130,26 +130,6 @@ bool TreeGround::inWater(Vec2d p, double clearance) const { return inPolygons(wa
 
 bool TreeGround::inPaved(Vec2d p, double clearance) const { return inPolygons(paved_, pavedGrid_, p, clearance); }
 
-Area outerForestOf(const CityModel& city, const TreeOptions& options) {
-    Area forest;
-    forest.kind = AreaKind::Forest;
-    if (!(options.outerForest > 0.0f)) return forest;
-    Vec2d lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
-    const auto extend = [&](Vec2d p) {
-        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    };
-    for (const Building& b : city.buildings)
-        for (Vec2d p : b.footprint.outer) extend(p);
-    for (const Road& r : city.roads)
-        for (Vec2d p : r.centerline) extend(p);
-    if (!(lo.x <= hi.x)) return forest;
-    const double w = options.outerForest;
-    forest.polygon.outer = {{lo.x - w, lo.y - w}, {hi.x + w, lo.y - w}, {hi.x + w, hi.y + w}, {lo.x - w, hi.y + w}};
-    forest.polygon.holes = {{lo, {lo.x, hi.y}, hi, {hi.x, lo.y}}};
-    return forest;
-}
-
 float fillDensity(AreaKind kind, const TreeOptions& options) {
     switch (kind) {
     case AreaKind::Forest: return options.forestDensity;
@@ -180,9 +160,8 @@ std::vector<Tree> placeTrees(const CityModel& city, const TreeOptions& options, 
         placed.add(t.position);
     }
     size_t filled = 0;
-    const Area outer = outerForestOf(city, options);
-    for (size_t a = 0; a <= city.areas.size(); ++a) {
-        const Area& area = a < city.areas.size() ? city.areas[a] : outer;
+    for (size_t a = 0; a < city.areas.size(); ++a) {
+        const Area& area = city.areas[a];
         const float density = fillDensity(area.kind, options);
         if (!(density > 0.0f) || area.polygon.outer.size() < 3) continue;
         const double cell = 100.0 / std::sqrt(double(density));

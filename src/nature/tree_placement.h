@@ -55,10 +55,6 @@ inline constexpr double kTreeSidewalkAllowance = 3.0;
 /// area's id and its grid cell only.
 std::vector<Tree> placeTrees(const CityModel& city, const TreeOptions& options, std::map<std::string, uint64_t>& dropped);
 
-/// The ring of forest options.outerForest wide around the box of the city's roads and buildings, as
-/// a Forest area (empty outline when the option is 0 or the city has neither).
-Area outerForestOf(const CityModel& city, const TreeOptions& options);
-
 /// Trees per hectare that `options` fills into an area of `kind` (0: none).
 float fillDensity(AreaKind kind, const TreeOptions& options);
 

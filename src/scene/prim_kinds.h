@@ -4,6 +4,7 @@
 // docs/architecture.md says how to add a kind.
 #pragma once
 
+#include "scene/forest_record.h"
 #include "scene/ground_record.h"
 #include "scene/lamp_record.h"
 #include "scene/terrain_record.h"
@@ -27,7 +28,8 @@ struct PrimKindList {
 
 /// Every kind, by record; its place in the list is its kind index (SurfaceHit::kind), and the BVH's
 /// leaf slots of each kind follow those of the kinds before it.
-using PrimKinds = PrimKindList<Triangle, WallRecord, GroundRecord, LampRecord, TerrainRecord, TreeRecord, PlanetRecord>;
+using PrimKinds =
+    PrimKindList<Triangle, WallRecord, GroundRecord, LampRecord, TerrainRecord, TreeRecord, PlanetRecord, ForestRecord>;
 inline constexpr uint32_t kPrimKindCount = PrimKinds::count;
 /// SurfaceHit::kind of no hit.
 inline constexpr uint32_t kNoPrimKind = 0xffu;

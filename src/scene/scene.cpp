@@ -19,11 +19,12 @@ constexpr float kLowLayer = 0.5f;
 Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, const std::vector<WallRecord>& wholeWalls,
                    WallTileSize tileSize, const std::vector<GroundRecord>& grounds,
                    const std::vector<LampRecord>& lamps, const std::vector<TreeRecord>& trees,
-                   const TerrainField& terrain, const std::vector<PlanetRecord>& planets) {
+                   const TerrainField& terrain, const std::vector<PlanetRecord>& planets,
+                   const std::vector<ForestRecord>& forests) {
     const std::vector<WallRecord> walls = splitWallsIntoTiles(wholeWalls, tileSize);
     // Each kind's records in input order, as PrimKinds lists them.
     const std::vector<TerrainRecord> terrains = terrain.empty() ? std::vector<TerrainRecord>{} : std::vector{terrain.record};
-    const auto inputs = std::tie(mesh.triangles, walls, grounds, lamps, terrains, trees, planets);
+    const auto inputs = std::tie(mesh.triangles, walls, grounds, lamps, terrains, trees, planets, forests);
     static_assert(std::tuple_size_v<decltype(inputs)> == kPrimKindCount, "an input per kind of PrimKinds");
     // Kind k's record i is primitive first[k] + i.
     uint32_t first[kPrimKindCount + 1] = {};

@@ -44,7 +44,8 @@ struct Scene {
     LightListInfo lights;   ///< beside the light arrays, which buildLights (lights/light_build.h) fills from the rest
 
     /// Builds one BVH over the triangles of `mesh`, the tiles of the procedural `walls`
-    /// (splitWallsIntoTiles), the `grounds` (hung from its root) and the analytic street `lamps`, `trees` and `planets`,
+    /// (splitWallsIntoTiles), the `grounds` (hung from its root) and the analytic street `lamps`, `trees`, `planets`
+    /// and `forests`,
     /// and stores each kind's records in leaf order, the slots of each kind after those of the kinds
     /// before it (SceneView::kindEnd). A street triangle (within half a metre of the ground) may have
     /// several references, one per piece (accel/split_references.h), and is stored once per slot.
@@ -53,7 +54,7 @@ struct Scene {
                        const std::vector<WallRecord>& walls = {}, WallTileSize tileSize = {},
                        const std::vector<GroundRecord>& grounds = {}, const std::vector<LampRecord>& lamps = {},
                        const std::vector<TreeRecord>& trees = {}, const TerrainField& terrain = {},
-                       const std::vector<PlanetRecord>& planets = {});
+                       const std::vector<PlanetRecord>& planets = {}, const std::vector<ForestRecord>& forests = {});
     SceneView view() const;
     SceneMemory memory() const;
 };

@@ -39,6 +39,7 @@
     X(float, terrainData, "terrain")                  \
     X(TreeRecord, trees, "trees")                     \
     X(PlanetRecord, planets, "planets")                \
+    X(ForestRecord, forests, "forests")                \
     X(CloudLayer, cloudLayers, "cloud_layers")         \
     X(CloudNoiseTexel, cloudNoise, "cloud_noise")      \
     X(float, cloudCoverage, "cloud_coverage")          \
@@ -65,9 +66,10 @@ URBIS_HD auto& kindArray(auto& arrays) {
     else if constexpr (std::is_same_v<Record, LampRecord>) return arrays.lamps;
     else if constexpr (std::is_same_v<Record, TerrainRecord>) return arrays.terrains;
     else if constexpr (std::is_same_v<Record, TreeRecord>) return arrays.trees;
+    else if constexpr (std::is_same_v<Record, PlanetRecord>) return arrays.planets;
     else {
-        static_assert(std::is_same_v<Record, PlanetRecord>, "a kind of PrimKinds without its array here");
-        return arrays.planets;
+        static_assert(std::is_same_v<Record, ForestRecord>, "a kind of PrimKinds without its array here");
+        return arrays.forests;
     }
 }
 
