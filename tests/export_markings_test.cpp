@@ -153,17 +153,19 @@ TEST(ExportMarkings, OaklandEveryPaintedPointOfARoadIsCovered) {
                 const float road = surfaceHeight(m.mesh.mesh, m.roadTriangles[i], x, z, -1e-3f);
                 if (edge || std::isnan(road)) continue;
                 ++samples;
-                uint32_t found = ~0u;
+                std::set<uint32_t> found;   // the colours of the pieces over the point (bands may overlap)
                 for (size_t k : marks) {
                     float b1, b2;
                     const Triangle& t = m.markings.triangles[k];
-                    if (inPlan(t, x, z, 0.0f, b1, b2) && std::fabs(t.p0.y - road - kMarkingLift) < 0.5f) found = m.markings.info[k].material;
+                    if (inPlan(t, x, z, 0.0f, b1, b2) && std::fabs(t.p0.y - road - kMarkingLift) < 0.5f)
+                        found.insert(m.markings.info[k].material);
                 }
                 if (paint == kNoPaint) {
-                    EXPECT_EQ(found, ~0u) << "segment " << i << " along " << along << " across " << across;
+                    EXPECT_TRUE(found.empty()) << "segment " << i << " along " << along << " across " << across;
                 } else {
                     ++painted;
-                    EXPECT_EQ(found, s.paint + uint32_t(paint) - 1) << "segment " << i << " along " << along << " across " << across;
+                    EXPECT_EQ(found.count(s.paint + uint32_t(paint) - 1), 1u)
+                        << "segment " << i << " along " << along << " across " << across;
                 }
             }
     }
