@@ -10,6 +10,7 @@
 #include "export/obj_file.h"
 #include "export/road_marking_mesh.h"
 #include "osm/osm_import.h"
+#include "scene/surface_part.h"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
@@ -51,7 +52,7 @@ const VillageExport& village() {
         for (size_t k = 0; k < e.mesh.mesh.size(); ++k) {
             const TriangleInfo info = e.mesh.mesh.info[k];
             e.materials.insert(info.material);
-            if (info.object >= 1 && info.object <= e.city.buildings.size()) {
+            if (info.object >= 1 && info.object <= e.city.buildings.size() && info.part < uint32_t(SurfacePart::Road)) {
                 e.buildingObjects.insert(info.object);
                 e.buildingBounds[info.object].extend(primBounds(e.mesh.mesh.triangles[k]));
                 ++e.buildingTriangles;

@@ -159,7 +159,9 @@ ExportScene exportSceneOf(const CityModel& city, const CityMesh& mesh, const Ter
         everything.extend(primBounds(t));
         const uint32_t object = info.object;
         ExportNode* node = nullptr;
-        if (object >= 1 && object <= buildings.size()) {
+        // A building's parts lie before Road; a street triangle's object may be any number (a Road's
+        // is its RoadSegment's index).
+        if (object >= 1 && object <= buildings.size() && info.part < uint32_t(SurfacePart::Road)) {
             node = &buildings[object - 1];
             if (node->name.empty()) *node = buildingNode(city.buildings[object - 1], object - 1);
         } else {
