@@ -1,5 +1,6 @@
 // The export's files read back: glTF through tinygltf, OBJ by its lines, tiles by their sum; every
-// count compared with the triangle twin urbis renders (citygen's mesh), not with the exporter's own.
+// count compared with the triangle twin urbis renders (citygen's mesh) and the road markings laid on
+// it (export/road_marking_mesh.h), not with the exporter's own.
 #include "cli_support.h"
 
 #include "citygen/city_mesher.h"
@@ -7,7 +8,9 @@
 #include "export/export_tiles.h"
 #include "export/gltf_file.h"
 #include "export/obj_file.h"
+#include "export/road_marking_mesh.h"
 #include "osm/osm_import.h"
+#include "scene/surface_part.h"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
@@ -31,6 +34,7 @@ struct VillageExport {
     std::set<uint32_t> buildingObjects, materials;   ///< of the twin's triangles
     std::map<uint32_t, Bounds3f> buildingBounds;     ///< by object id
     size_t buildingTriangles = 0;
+    size_t markingTriangles = 0;                     ///< the node road_markings's
 };
 
 const VillageExport& village() {
@@ -41,19 +45,23 @@ const VillageExport& village() {
         options.geometry = {Representation::Triangles, Representation::Triangles, Representation::Triangles,
                             Representation::Triangles};
         options.hour = 21;
+        options.litRoomLooks = true;
         e.mesh = meshCity(e.city, options);
         const Camera camera = makeLookAtCamera({-150, 80, 150}, {0, 0, 0}, 40, 1.5f);
         e.scene = exportSceneOf(e.city, e.mesh, {}, camera, makeSun(35, 200, 0.27f, {1, 1, 1}));
         for (size_t k = 0; k < e.mesh.mesh.size(); ++k) {
             const TriangleInfo info = e.mesh.mesh.info[k];
             e.materials.insert(info.material);
-            if (info.object >= 1 && info.object <= e.city.buildings.size()) {
+            if (info.object >= 1 && info.object <= e.city.buildings.size() && info.part < uint32_t(SurfacePart::Road)) {
                 e.buildingObjects.insert(info.object);
                 e.buildingBounds[info.object].extend(primBounds(e.mesh.mesh.triangles[k]));
                 ++e.buildingTriangles;
             }
         }
         e.materials.insert(e.mesh.groundMaterial);
+        const TriangleMesh markings = roadMarkingMesh(e.mesh.roadSegments, e.mesh.mesh);
+        e.markingTriangles = markings.size();
+        for (const TriangleInfo& info : markings.info) e.materials.insert(info.material);
         return e;
     }();
     return v;
@@ -112,7 +120,7 @@ void expectVillageCounts(const tinygltf::Model& model) {
         }
     }
     EXPECT_EQ(buildingNodes, buildings);
-    EXPECT_EQ(triangles, v.mesh.mesh.size() + 2) << "the twin's triangles and the ground's two";
+    EXPECT_EQ(triangles, v.mesh.mesh.size() + v.markingTriangles + 2) << "the twin's triangles, the markings and the ground's two";
     const tinygltf::Value& origin = model.asset.extras.Get("origin");
     EXPECT_DOUBLE_EQ(origin.Get("lon").GetNumberAsDouble(), v.city.origin.lon);
     EXPECT_DOUBLE_EQ(origin.Get("lat").GetNumberAsDouble(), v.city.origin.lat);
@@ -170,7 +178,7 @@ TEST(ExportFiles, VillageObjReadBackHasTheTwinsCounts) {
         if (line.rfind("newmtl ", 0) == 0) defined.insert(line.substr(7));
     const VillageExport& v = village();
     EXPECT_EQ(objects, v.scene.nodes.size());
-    EXPECT_EQ(faces, v.mesh.mesh.size() + 2);
+    EXPECT_EQ(faces, v.mesh.mesh.size() + v.markingTriangles + 2);
     EXPECT_EQ(badFaces, 0u) << "a face refers to a vertex not yet written";
     EXPECT_EQ(used.size(), v.materials.size());
     EXPECT_EQ(used, defined);

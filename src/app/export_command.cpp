@@ -80,7 +80,9 @@ void runExport(const ExportCommandLine& line) {
     const size_t limit = memoryLimit(o.maxMemory);
 
     CityModel city = loadSceneCity(d);
-    CityMesh mesh = meshCity(city, cityMeshOptionsOf(d, limit));
+    CityMeshOptions meshOptions = cityMeshOptionsOf(d, limit);
+    meshOptions.litRoomLooks = true;
+    CityMesh mesh = meshCity(city, meshOptions);
     const TerrainField terrain = cityTerrainOf(d.terrain, city.origin, mesh);
     const Camera camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces);
     ExportScene scene = exportSceneOf(city, mesh, terrain, camera, celestialLightsOf(d, city.origin).sun);

@@ -3,6 +3,7 @@
 #include "citygen/building_mesher.h"
 #include "citygen/city_trees.h"
 #include "citygen/facade_mesher.h"
+#include "citygen/lit_room_palette.h"
 #include "citygen/window_schedule.h"
 #include "base/input_error.h"
 #include "scene/memory_budget.h"
@@ -113,8 +114,9 @@ std::vector<Bounds3f> framingPieces(const CityMesh& mesh) {
     return pieces;
 }
 
-/// Replaces the procedural walls by their triangle twin, after checking that it fits in memory.
-void meshWallTwins(const CityMeshOptions& options, CityMesh& out) {
+/// Replaces the procedural walls by their triangle twin, after checking that it fits in memory; lit
+/// rooms of the palette from `litRoomPalette` (kNoLitRoomPalette: none).
+void meshWallTwins(const CityMeshOptions& options, uint32_t litRoomPalette, CityMesh& out) {
     const size_t twinTriangles = tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, out.walls.size(), 1024), size_t(0),
         [&](const tbb::blocked_range<size_t>& r, size_t n) {
@@ -135,7 +137,7 @@ void meshWallTwins(const CityMeshOptions& options, CityMesh& out) {
     std::vector<TriangleMesh> parts((out.walls.size() + kChunk - 1) / kChunk);
     tbb::parallel_for(size_t(0), parts.size(), [&](size_t c) {
         const size_t end = std::min(out.walls.size(), (c + 1) * kChunk);
-        for (size_t i = c * kChunk; i < end; ++i) meshWall(out.walls[i], parts[c]);
+        for (size_t i = c * kChunk; i < end; ++i) meshWall(out.walls[i], parts[c], litRoomPalette);
     });
     out.mesh.triangles.reserve(out.mesh.size() + twinTriangles);
     out.mesh.info.reserve(out.mesh.size() + twinTriangles);
@@ -186,6 +188,12 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     out.materials = std::move(table.materials);
     const uint32_t facadeMaterials = uint32_t(out.materials.size());
     addFacadeMaterials(options.materials, out.materials);
+    uint32_t litRoomPalette = kNoLitRoomPalette;
+    if (options.litRoomLooks && options.geometry.walls == Representation::Triangles) {
+        litRoomPalette = uint32_t(out.materials.size());
+        for (const Material& m : litRoomPaletteMaterials(out.materials[facadeMaterials + uint32_t(FacadeMaterial::RoomLit)]))
+            out.materials.push_back(m);
+    }
     for (WallContext& f : facades) {
         f.facadeMaterials = facadeMaterials;
         f.proceduralParapets = options.geometry.roofs == Representation::Procedural;
@@ -218,7 +226,7 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     out.facadeWalls = out.walls.size();
     out.groundMaterial = groundMaterial;
     out.trianglesByKind = {{"walls", walls}, {"roofs", roofs}};
-    if (options.geometry.walls == Representation::Triangles) meshWallTwins(options, out);
+    if (options.geometry.walls == Representation::Triangles) meshWallTwins(options, litRoomPalette, out);
     if (options.streets) addCityTrees(city, options, addStreets(city, options, out), out);
     return out;
 }

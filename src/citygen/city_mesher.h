@@ -44,6 +44,9 @@ struct CityMeshOptions {
     size_t memoryLimit = 0;
     WaterOptions water;       ///< the water's bed and waves (streets/water_depth.h)
     TreeOptions trees;        ///< placed with the streets (none with streets = false)
+    /// The twin's lit rooms each with its window's colour and intensity (citygen/lit_room_palette.h),
+    /// as the procedural walls show them; else all of FacadeMaterial::RoomLit. For exports.
+    bool litRoomLooks = false;
 };
 
 struct CityMesh {

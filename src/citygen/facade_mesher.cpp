@@ -1,5 +1,6 @@
 #include "citygen/facade_mesher.h"
 
+#include "citygen/lit_room_palette.h"
 #include "geometry/wall_parapet.h"
 #include "geometry/wall_parts.h"
 
@@ -65,6 +66,14 @@ void addParapet(const WallRecord& wall, TriangleMesh& mesh) {
     addQuad(wall, inner, inner.axis, inner.lo[inner.axis], mesh);
 }
 
+/// Gives the lit room's parts of cell (floor, slot) its window's palette entry.
+void giveLook(const WallRecord& wall, uint32_t floor, uint32_t slot, uint32_t palette, CellParts& cell) {
+    const uint32_t lit = wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit);
+    const uint32_t entry = palette + litRoomPaletteEntry(windowLook(wall, floor, slot));
+    for (int k = 0; k < cell.count; ++k)
+        if (cell.parts[k].material == lit) cell.parts[k].material = entry;
+}
+
 } // namespace
 
 size_t wallTwinTriangleCount(const WallRecord& wall) {
@@ -80,7 +89,7 @@ size_t wallTwinTriangleCount(const WallRecord& wall) {
     return n;
 }
 
-void meshWall(const WallRecord& wall, TriangleMesh& mesh) {
+void meshWall(const WallRecord& wall, TriangleMesh& mesh, uint32_t litRoomPalette) {
     CellParts margins;
     marginParts(wall, margins);
     addParts(wall, margins, mesh);
@@ -89,6 +98,7 @@ void meshWall(const WallRecord& wall, TriangleMesh& mesh) {
         for (uint32_t i = 0; i < wall.slots; ++i) {
             CellParts cell;
             cellParts(wall, j, i, CellSide::Both, cell);
+            if (litRoomPalette != kNoLitRoomPalette) giveLook(wall, j, i, litRoomPalette, cell);
             addParts(wall, cell, mesh);
         }
 }

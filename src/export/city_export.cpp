@@ -2,12 +2,14 @@
 
 #include "description/building_type_names.h"
 #include "export/pbr_material.h"
+#include "export/road_marking_mesh.h"
 #include "geometry/terrain_intersect.h"
 #include "scene/surface_part.h"
 
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 
 namespace urbis {
 
@@ -93,6 +95,20 @@ private:
     std::map<uint32_t, uint32_t> remap_;
 };
 
+/// The road markings' node (export/road_marking_mesh.h), empty where no road is marked.
+ExportNode roadMarkingNode(const CityMesh& mesh, SceneCollector& out) {
+    ExportNode node;
+    node.name = "road_markings";
+    const TriangleMesh markings = roadMarkingMesh(mesh.roadSegments, mesh.mesh);
+    std::set<uint32_t> roads;
+    for (size_t k = 0; k < markings.size(); ++k) {
+        out.primitiveOf(node, markings.info[k].material).triangles.push_back(markings.triangles[k]);
+        roads.insert(markings.info[k].object);
+    }
+    node.extras = {{"kind", "road_markings"}, {"objects", roads.size()}, {"lift", kMarkingLift}};
+    return node;
+}
+
 /// The flat ground: a square at y = 0 reaching `margin` past `bounds`.
 ExportNode groundNode(const Bounds3f& bounds, float margin, uint32_t material, SceneCollector& out) {
     ExportNode node;
@@ -143,7 +159,9 @@ ExportScene exportSceneOf(const CityModel& city, const CityMesh& mesh, const Ter
         everything.extend(primBounds(t));
         const uint32_t object = info.object;
         ExportNode* node = nullptr;
-        if (object >= 1 && object <= buildings.size()) {
+        // A building's parts lie before Road; a street triangle's object may be any number (a Road's
+        // is its RoadSegment's index).
+        if (object >= 1 && object <= buildings.size() && info.part < uint32_t(SurfacePart::Road)) {
             node = &buildings[object - 1];
             if (node->name.empty()) *node = buildingNode(city.buildings[object - 1], object - 1);
         } else {
@@ -161,6 +179,8 @@ ExportScene exportSceneOf(const CityModel& city, const CityMesh& mesh, const Ter
         node.extras = {{"kind", kind}, {"objects", streetObjects[kind].size()}};
         scene.nodes.push_back(std::move(node));
     }
+    ExportNode markings = roadMarkingNode(mesh, out);
+    if (!markings.primitives.empty()) scene.nodes.push_back(std::move(markings));
     if (terrain.empty()) {
         if (everything.empty()) everything.extend(Vec3f{0, 0, 0});
         scene.nodes.push_back(groundNode(everything, 100.0f, mesh.groundMaterial, out));

@@ -11,7 +11,7 @@
 
 namespace urbis {
 
-/// The export of `mesh`, meshed from `city` (object i + 1 is building i; other objects are grouped by
+/// The export of `mesh`, meshed from `city` (object i + 1 of a building part is building i; the streets' parts are grouped by
 /// their SurfacePart into "roads", "junctions", "sidewalks", "ground_cover", "water", "bridges",
 /// "railways", "lamps", "trees"), standing on `terrain` (meshed cell by cell, each triangle with the
 /// terrain's material at its centre) or, where empty, on a flat "ground" square reaching 100 m past

@@ -23,9 +23,13 @@ inline constexpr float kCurtainTransmission = 0.3f, kWindowNoiseScale = 0.7f;
 /// Salt of the hash of a window's look, apart from cellRandom's choices of its geometry.
 inline constexpr uint32_t kWindowLookSalt = 0x9e3779b9u;
 
+/// The colour (luminance 1) of a room of `coolness` (WindowLook::coolness).
+URBIS_HD inline Vec3f windowColour(float coolness) { return kWindowWarm + (kWindowCool - kWindowWarm) * coolness; }
+
 /// The look of one lit room, from its hash.
 struct WindowLook {
-    Vec3f colour;          ///< luminance 1: a blackbody between 2700 and 4000 K
+    float coolness;        ///< 0 at 2700 K to 1 at 4000 K
+    Vec3f colour;          ///< luminance 1: the blackbody of `coolness`, between kWindowWarm and kWindowCool
     float intensity;       ///< 0.5 to 1.5 times the lit room's emission
     float curtainShare;    ///< of the opening's width a curtain covers (0: none), from curtainFromLeft's side
     bool curtainFromLeft;
@@ -37,8 +41,8 @@ struct WindowLook {
 URBIS_HD inline WindowLook windowLook(const WallRecord& wall, uint32_t floor, uint32_t slot) {
     HashStream rng{hash3(wall.cellSeed ^ kWindowLookSalt, floor, slot)};
     WindowLook w;
-    const float t = rng.uniform();
-    w.colour = kWindowWarm + (kWindowCool - kWindowWarm) * t;
+    w.coolness = rng.uniform();
+    w.colour = windowColour(w.coolness);
     w.intensity = 0.5f + rng.uniform();
     // Two rooms in five have a curtain partly drawn, over a fifth to four fifths of the window.
     const bool curtain = rng.uniform() < 0.4f;
@@ -89,11 +93,16 @@ URBIS_HD inline Vec3f windowRadiance(const WindowLook& w, const WindowRect& r, V
     return L * (0.6f + 0.8f * windowNoise(w.noiseKey, u * (1.0f / kWindowNoiseScale), v * (1.0f / kWindowNoiseScale)));
 }
 
+/// A lit window's mean luminance over its glass in units of the lit room's: its intensity, a curtain's
+/// share dimmed (the noise's mean is 1).
+URBIS_HD inline float windowMeanIntensity(const WindowLook& w) {
+    return w.intensity * (1.0f - w.curtainShare + w.curtainShare * kCurtainTransmission * luminance(w.curtainTint));
+}
+
 /// Expected flux of a lit window through its glass plane (before the pane), renderer units: pi
-/// times its area times its mean luminance (the noise's mean is 1; a curtain's share is dimmed).
+/// times its area times its mean luminance.
 URBIS_HD inline float windowPower(const WindowLook& w, const WindowRect& r, Vec3f room) {
-    const float curtain = 1.0f - w.curtainShare + w.curtainShare * kCurtainTransmission * luminance(w.curtainTint);
-    return kPi * r.area() * luminance(room) * w.intensity * curtain;
+    return kPi * r.area() * luminance(room) * windowMeanIntensity(w);
 }
 
 /// Cells of a wall record's tile.
