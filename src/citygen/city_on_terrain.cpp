@@ -9,6 +9,37 @@
 namespace urbis {
 namespace {
 
+/// The forests on the terrain, each cut into square tiles of whole cells with the ground's range under
+/// each tile, so that a tile's box ends at its own hills' crowns: one box over the whole terrain's
+/// range would send every ray above the valleys through kilometres of empty cells. Adjacent tiles share
+/// their edges (the same floats), so every cell's tree belongs to one tile; their trees stand on the
+/// terrain where the ray finds them (terrainHeight, whose range over a tile rangeIn bounds).
+std::vector<ForestRecord> forestTilesOnTerrain(const std::vector<ForestRecord>& forests, const TerrainField& terrain) {
+    constexpr float kTileMetres = 192.0f;
+    constexpr double kMostTilesPerForest = 4096.0;
+    std::vector<ForestRecord> tiles;
+    for (const ForestRecord& forest : forests) {
+        const float width = forest.x1 - forest.x0, depth = forest.z1 - forest.z0;
+        // Whole cells a tile, more of them where a large forest would otherwise need too many tiles.
+        const double minSide = std::sqrt(double(width) * double(depth) / kMostTilesPerForest);
+        const float side = forest.cell * std::ceil(std::max<float>(kTileMetres, float(minSide)) / forest.cell);
+        const int nx = std::max(1, int(std::ceil(width / side))), nz = std::max(1, int(std::ceil(depth / side)));
+        for (int k = 0; k < nz; ++k)
+            for (int i = 0; i < nx; ++i) {
+                ForestRecord tile = forest;
+                tile.onTerrain = 1;
+                tile.x0 = i == 0 ? forest.x0 : forest.x0 + float(i) * side;
+                tile.x1 = i == nx - 1 ? forest.x1 : forest.x0 + float(i + 1) * side;
+                tile.z0 = k == 0 ? forest.z0 : forest.z0 + float(k) * side;
+                tile.z1 = k == nz - 1 ? forest.z1 : forest.z0 + float(k + 1) * side;
+                terrain.rangeIn(tile.x0, tile.z0, tile.x1, tile.z1, tile.groundLo, tile.groundHi);
+                tiles.push_back(tile);
+            }
+    }
+    return tiles;
+}
+
+
 /// Whether a triangle of this part belongs to a tree's twin (nature/tree_mesher.h).
 bool isTreePart(uint32_t part) {
     return part == uint32_t(SurfacePart::TreeTrunk) || part == uint32_t(SurfacePart::TreeCrown);
@@ -158,13 +189,7 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
     }
     for (LampRecord& lamp : mesh.lamps) lamp.base.y += terrain.heightAt(lamp.base.x, lamp.base.z);
     for (TreeRecord& tree : mesh.trees) tree.base.y += terrain.heightAt(tree.base.x, tree.base.z);
-    // The forest's trees stand on the terrain where the ray finds them; around the grid the heights
-    // fall to the flat ground at 0, never below it.
-    for (ForestRecord& forest : mesh.forests) {
-        forest.onTerrain = 1;
-        forest.groundLo = std::min(0.0f, terrain.record.yMin);
-        forest.groundHi = std::max(0.0f, terrain.record.yMax);
-    }
+    mesh.forests = forestTilesOnTerrain(mesh.forests, terrain);
     // The framing follows the ground under each piece; the city's bounds take every building's lift.
     for (Bounds3f& piece : mesh.framingPieces) {
         if (piece.empty()) continue;
