@@ -115,6 +115,23 @@ TEST(TerrainWater, ALakeLiesAtTheLowestGroundOfItsShoreOverTheCarvedTerrain) {
     }
 }
 
+TEST(TerrainWater, AnOsmEleSetsTheLevel) {
+    // The same pond in the bowl, tagged ele=13.5: its level, not its shore's lowest ground (12 m).
+    auto bowl = [](float x, float z) { return 10.0f + 0.005f * (x * x + z * z); };
+    TerrainField field = fieldOf(bowl);
+    Area pond = test::squareArea(AreaKind::Water, 20);
+    pond.ele = 13.5f;
+    CityMesh mesh;
+    const WaterLevels levels = placeWater(mesh, field, {pond});
+    ASSERT_EQ(levels.size(), 1u);
+    EXPECT_EQ(levels.begin()->second, 13.5f);
+    const Scene scene = buildCityScene(mesh, {}, {}, field);
+    const SurfaceHit water = downFrom(scene.view(), 0.0f, 50.0f, 0.0f);
+    ASSERT_TRUE(isWater(scene, water));
+    EXPECT_NEAR(50.0f - water.t, 13.5f, 1e-4f);
+    EXPECT_NEAR(field.heightAt(0, 0), 13.5f - WaterOptions{}.maxDepth, 1e-4f);   // the bed below that level
+}
+
 TEST(TerrainWater, TheSeaLiesOverTheFlatGroundAndItsBedBelowItOnTheGrid) {
     // Flat land at 0 on the grid; the sea covers x < 0 far beyond it.
     TerrainField field = fieldOf([](float, float) { return 0.0f; });

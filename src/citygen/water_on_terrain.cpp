@@ -55,6 +55,10 @@ WaterLevels waterLevelsOn(const CityMesh& mesh, const TerrainField& terrain) {
     WaterLevels levels;
     const float step = 0.5f * terrain.record.cell;
     for (const auto& [object, surface] : waterSurfacesOf(mesh)) {
+        if (const auto ele = mesh.waterElevations.find(object); ele != mesh.waterElevations.end()) {
+            levels[object] = ele->second;
+            continue;
+        }
         float lowest = INFINITY;
         for (const ShoreEdge& e : shoreOf(surface)) {
             const int steps = std::max(1, int(std::ceil(length(e.b - e.a) / step)));

@@ -17,9 +17,10 @@ using WaterLevels = std::map<uint32_t, float>;
 /// The surfaces of `mesh`'s water bodies (its triangles of a Water material), by object id.
 std::map<uint32_t, std::vector<Triangle>> waterSurfacesOf(const CityMesh& mesh);
 
-/// Each water body's level on `terrain`: the lowest ground along its shore (the edges its surface's triangles do not share), sampled every half sample spacing;
-/// never below kWaterLevel, so that the sea and water beyond the grid lie over the flat ground as they
-/// do without a terrain.
+/// Each water body's level on `terrain`: its OSM `ele` where tagged (mesh.waterElevations: metres above
+/// sea level, the DEM's datum); else the lowest ground along its shore (the edges its surface's
+/// triangles do not share), sampled every half sample spacing, never below kWaterLevel, so that the sea
+/// and water beyond the grid lie over the flat ground as they do without a terrain.
 WaterLevels waterLevelsOn(const CityMesh& mesh, const TerrainField& terrain);
 
 /// Lowers every sample of `terrain` under a water body to at most its level minus waterBedDepth of its

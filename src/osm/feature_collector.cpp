@@ -200,6 +200,8 @@ void FeatureCollector::addPolygonFeature(PolygonRole role, const osmium::TagList
         if (const char* surface = lookup("surface")) a.attributes.surface = parseRoadSurface(surface);
         a.attributes.layer = levelFromTags(lookup, "area_bad_layer_tag", a.tagIssues).layer;
         a.attributes.leafType = leafTypeFromTags(lookup);
+        if (const char* ele = lookup("ele"); ele && a.attributes.kind == AreaKind::Water)
+            if (const std::optional<double> metres = parseElevation(ele)) a.attributes.ele = float(*metres);
         out_.areas.push_back(std::move(a));
         return;
     }

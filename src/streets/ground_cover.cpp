@@ -149,6 +149,7 @@ void meshGroundCover(const CityModel& city, const StreetOptions& options, Street
             const TriangleInfo bed = infoOf(StreetMaterial::WaterBed, SurfacePart::Water);
             waterTriangles += addFlat(triangles, waterSurfaceLevel(), info, out.mesh);
             waterTriangles += meshWaterBed(shapes, item.shape, options.water, bed, out.mesh);
+            if (const std::optional<float> ele = city.areas[item.area].ele) out.waterElevations[object] = *ele;
             ++waterAreas;
         } else {
             groundTriangles += addFlat(triangles, item.level, info, out.mesh);
