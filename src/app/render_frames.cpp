@@ -90,7 +90,8 @@ void renderFrames(const RenderOptions& o, PreparedScene& prepared, const MpiWorl
             relightWindows(prepared.scene, prepared.windowUses, hourOf(d));
             lightScene(prepared.scene, d, prepared.origin);
         }
-        const Camera camera = cameraOf(d.camera, float(film.width) / float(film.height), prepared.origin, prepared.framingPieces);
+        const Camera camera = cameraOf(d.camera, float(film.width) / float(film.height), prepared.origin, prepared.framingPieces,
+                                       groundOf(prepared.scene));
         Film image(settings.width, settings.height, aovs);
         RenderCounters counters;
         DeviceReport report;
