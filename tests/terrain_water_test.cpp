@@ -52,7 +52,7 @@ TEST(TerrainWater, ALakeLiesAtTheLowestGroundOfItsShoreOverTheCarvedTerrain) {
     CityMesh mesh;
     const WaterLevels levels = placeWater(mesh, field, {test::squareArea(AreaKind::Water, 20)});
     ASSERT_EQ(levels.size(), 1u);
-    const float level = levels.begin()->second;
+    const float level = levels.begin()->second.level;
     EXPECT_NEAR(level, 12.0f, 1e-4f);
 
     // Samples under the water lie below the level by the bank's profile; those outside are untouched.
@@ -124,7 +124,7 @@ TEST(TerrainWater, AnOsmEleSetsTheLevel) {
     CityMesh mesh;
     const WaterLevels levels = placeWater(mesh, field, {pond});
     ASSERT_EQ(levels.size(), 1u);
-    EXPECT_EQ(levels.begin()->second, 13.5f);
+    EXPECT_EQ(levels.begin()->second.level, 13.5f);
     const Scene scene = buildCityScene(mesh, {}, {}, field);
     const SurfaceHit water = downFrom(scene.view(), 0.0f, 50.0f, 0.0f);
     ASSERT_TRUE(isWater(scene, water));
@@ -141,7 +141,7 @@ TEST(TerrainWater, TheSeaLiesOverTheFlatGroundAndItsBedBelowItOnTheGrid) {
     CityMesh mesh;
     const WaterLevels levels = placeWater(mesh, field, {sea});
     ASSERT_EQ(levels.size(), 1u);
-    EXPECT_EQ(levels.begin()->second, kWaterLevel);
+    EXPECT_EQ(levels.begin()->second.level, kWaterLevel);
     const Scene scene = buildCityScene(mesh, {}, {}, field);
     const SceneView view = scene.view();
     // On the grid the plane y = 0 is open: the bed is the terrain, a shelf out at the full depth.

@@ -162,6 +162,7 @@ uint32_t addStreets(const CityModel& city, const CityMeshOptions& options, CityM
     out.lamps = std::move(streets.lamps);
     out.bridgeSpans = std::move(streets.bridgeSpans);
     out.waterElevations = std::move(streets.waterElevations);
+    out.waterFlows = std::move(streets.waterFlows);
     for (const auto& [kind, n] : streets.trianglesByKind) out.trianglesByKind[kind] += n;
     for (const auto& [reason, n] : streets.dropped) out.dropped[reason] += n;
     out.streetCounts = std::move(streets.counts);

@@ -53,6 +53,7 @@ struct CityMesh {
     std::vector<LampRecord> lamps;             ///< procedural street lamps (empty with lamps=triangles)
     std::vector<BridgeSpan> bridgeSpans;       ///< bridges' decks (streets/bridge_spans.h), for a terrain
     std::map<uint32_t, float> waterElevations; ///< OSM `ele` of water bodies by object id: their level on a terrain
+    std::map<uint32_t, std::vector<Vec2d>> waterFlows;  ///< rivers drawn from lines: their flow (world x, z) by object id
     std::vector<Material> materials;
     uint32_t groundMaterial = 0;               ///< the ground plane's entry in materials
     Bounds3f cityBounds;                       ///< world bounds of the buildings (ground and streets excluded)

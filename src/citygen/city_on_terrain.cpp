@@ -130,15 +130,18 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
             continue;
         }
         if (info.part == uint32_t(SurfacePart::Water)) {
-            // A water body with a level lies flat at it, over the terrain that is its bed.
+            // A water body lies at its surface (flat, or falling along a river's line), over the
+            // terrain that is its bed; a river's surface in pieces short enough to follow its fall.
             if (const auto level = water.find(info.object); level != water.end()) {
                 if (mesh.materials[info.material].kind != MaterialKind::Water) {
                     --mesh.trianglesByKind["water"];   // the flat ground's bed: the terrain replaces it
                     continue;
                 }
                 Triangle t = tris.triangles[i];
-                t.p0.y = t.p1.y = t.p2.y = level->second;
-                lifted.add(t, info);
+                t.p0.y = t.p1.y = t.p2.y = 0.0f;
+                pieces.clear();
+                liftStreetTriangle(t, [&](Vec3f p) { return level->second.at(p.x, p.z); }, edge, pieces);
+                for (const Triangle& piece : pieces) lifted.add(piece, info);
                 continue;
             }
         }

@@ -197,6 +197,9 @@ struct Area {
     Polygon polygon;
     LeafType leafType = LeafType::Unknown;   ///< `leaf_type` of a wood, forest or park (the trees filled in)
     std::optional<float> ele;                ///< `ele` of a water body: its level, m above sea level
+    /// A river mapped only as a line (waterway=river|stream|canal|drain|ditch): its centerline (local
+    /// metres) in its OSM direction, the way it flows; `polygon` is the ribbon around it. Empty otherwise.
+    std::vector<Vec2d> flowLine;
 };
 
 /// A longitude/latitude box in degrees, WGS84.

@@ -97,6 +97,28 @@ std::vector<Polygon> GeosContext::clipToRectangle(const Polygon& polygon, Vec2d 
     return parts;
 }
 
+std::vector<Polygon> GeosContext::ribbonAround(const std::vector<Vec2d>& line, double halfWidth) const {
+    const Handle ctx = handle_;
+    std::vector<Polygon> parts;
+    if (line.size() < 2) return parts;
+    std::vector<double> xy;
+    for (const Vec2d p : line) xy.insert(xy.end(), {p.x, p.y});
+    GEOSCoordSequence* sequence = GEOSCoordSeq_copyFromBuffer_r(ctx, xy.data(), unsigned(line.size()), 0, 0);
+    if (!sequence) return parts;
+    const GeometryPtr path(GEOSGeom_createLineString_r(ctx, sequence), GeometryDeleter{ctx});
+    if (!path) return parts;
+    const GeometryPtr ribbon(GEOSBufferWithStyle_r(ctx, path.get(), halfWidth, 4, GEOSBUF_CAP_FLAT, GEOSBUF_JOIN_ROUND, 5.0),
+                             GeometryDeleter{ctx});
+    if (!ribbon) return parts;
+    for (int i = 0, n = GEOSGetNumGeometries_r(ctx, ribbon.get()); i < n; ++i) {
+        const GEOSGeometry* part = GEOSGetGeometryN_r(ctx, ribbon.get(), i);
+        if (GEOSGeomTypeId_r(ctx, part) != GEOS_POLYGON || GEOSisEmpty_r(ctx, part) == 1) continue;
+        Polygon p = fromGeos(ctx, part);
+        if (p.outer.size() >= 3) parts.push_back(std::move(p));
+    }
+    return parts;
+}
+
 double GeosContext::overlapArea(const Polygon& a, const Polygon& b) const {
     const Handle ctx = handle_;
     const GeometryPtr ga = toGeos(ctx, a), gb = toGeos(ctx, b);

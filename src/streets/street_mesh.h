@@ -33,6 +33,7 @@ struct StreetMesh {
     std::vector<LampRecord> lamps;              ///< analytic street lamps (StreetOptions::lamps == Procedural)
     std::vector<BridgeSpan> bridgeSpans;        ///< road and railway bridges' decks, for a terrain
     std::map<uint32_t, float> waterElevations;  ///< OSM `ele` (Area::ele) of water bodies, by object id
+    std::map<uint32_t, std::vector<Vec2d>> waterFlows;  ///< rivers drawn from lines: Area::flowLine in world (x, z), by object id
     /// What was made, keyed roads, junctions, sidewalks, crossings, ground_cover, water, bridges,
     /// railways, lamps (for --stats `counts`).
     std::map<std::string, uint64_t> counts;
