@@ -43,6 +43,18 @@ TEST(TerrainCli, BenchTerrainAccuracyWritesEveryMeasure) {
             EXPECT_TRUE(a["methods"][march].contains(key)) << march << " " << key;
     EXPECT_EQ(a["methods"]["hierarchy"]["missed_intersections"], 0);
     EXPECT_LT(a["methods"]["hierarchy"]["max_hde_m"].get<double>(), 0.01);
+    // HDE by the hits' distance: four bands, the first within 1 km, whose hits add up to all of them.
+    const nlohmann::json& bands = a["methods"]["hierarchy"]["hde_by_distance"];
+    ASSERT_EQ(bands.size(), 4u);
+    EXPECT_EQ(bands[0]["from_m"], 0.0);
+    EXPECT_EQ(bands[0]["to_m"], 1000.0);
+    EXPECT_TRUE(bands[3]["to_m"].is_null()) << "the last band runs to the horizon";
+    size_t hits = 0;
+    for (const nlohmann::json& band : bands) {
+        hits += band["hits"].get<size_t>();
+        EXPECT_LE(band["max_hde_m"].get<double>(), a["methods"]["hierarchy"]["max_hde_m"].get<double>());
+    }
+    EXPECT_EQ(hits, a["methods"]["hierarchy"]["hits"].get<size_t>());
 }
 
 TEST(TerrainCli, CameraGeoAltitudeAboveGroundIsTheAglSuffix) {

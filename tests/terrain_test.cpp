@@ -119,6 +119,12 @@ TEST(TerrainMarch, HierarchyMissesNothingTheReferenceFindsAndIsExactInHeight) {
     // The goal: HDE under 1 cm at 1 km (the view's hits lie within 1.5 km).
     EXPECT_LT(a.maxHde, 0.01);
     EXPECT_LT(a.meanIde, 0.25) << "within the reference's step";
+    // By distance: the hits within 1 km, apart, hold the goal too; the bands count every hit once.
+    EXPECT_GT(a.byDistance[0].hits, 0u);
+    EXPECT_LT(a.byDistance[0].maxHde, 0.01);
+    size_t banded = 0;
+    for (const HdeBand& band : a.byDistance) banded += band.hits;
+    EXPECT_EQ(banded, a.hits);
     // The Cambridge rule at loose parameters steps over ridges: the measure must see it.
     TerrainField loose = field;
     loose.record.leiA = 20.0f, loose.record.leiC = 1.0f;
