@@ -50,7 +50,9 @@ TEST(TerrainRiver, AStreamFallsAlongItsLineAndNeverRises) {
     for (size_t i = 0; i < river.line.size(); ++i) {
         const Vec2d p = river.line[i];
         EXPECT_LE(river.heights[i], ground(float(p.x), float(p.y)) + 1e-3f) << p.x;   // at or below the ground
-        if (i > 0) EXPECT_LE(river.heights[i], river.heights[i - 1]) << p.x;            // never rising
+        if (i > 0) {
+            EXPECT_LE(river.heights[i], river.heights[i - 1]) << p.x;   // never rising
+        }
     }
     EXPECT_GT(river.heights.front() - river.heights.back(), 6.0f) << "it falls with the slope";
 

@@ -150,13 +150,13 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
         const Triangle& flat = tris.triangles[i];
         const bool raised = std::max({flat.p0.y, flat.p1.y, flat.p2.y}) >= kAtGround;
         const bool pier = info.part == uint32_t(SurfacePart::Pier);
-        auto lift = [&](Vec3f p) {
+        auto streetLift = [&](Vec3f p) {
             if (raised && !(pier && p.y < kAtGround))
                 if (const std::optional<float> deck = bridges.liftAt(p.x, p.z)) return *deck;
             return terrain.heightAt(p.x, p.z);
         };
         pieces.clear();
-        liftStreetTriangle(flat, lift, edge, pieces);
+        liftStreetTriangle(flat, streetLift, edge, pieces);
         for (const Triangle& t : pieces) lifted.add(t, info);
     }
     tris = std::move(lifted);
