@@ -4,6 +4,7 @@
 #include "citygen/city_scene.h"
 #include "citygen/street_grades.h"
 #include "geometry/scene_intersect.h"
+#include "terrain_grids.h"
 
 #include <gtest/gtest.h>
 
@@ -12,14 +13,8 @@
 namespace urbis {
 namespace {
 
-/// A field 2 m apart over [-100, 100]^2 with heights h(x).
-template <typename Height>
-TerrainField fieldOf(Height h) {
-    std::vector<float> heights;
-    for (int j = 0; j <= 100; ++j)
-        for (int i = 0; i <= 100; ++i) heights.push_back(h(-100.0f + 2.0f * float(i)));
-    return TerrainField::fromSamples(-100, -100, 2, 101, 101, std::move(heights));
-}
+/// The valley: rims at 30 m beyond |x| = 50, a V down to the floor at 0 m under the bridge's middle.
+float valley(float x, float) { return 30.0f * std::min(1.0f, std::fabs(x) / 50.0f); }
 
 /// A way along z = 0 from x0 to x1 (local y = 0), a point every 5 m.
 Road way(double x0, double x1, bool bridge) {
@@ -57,8 +52,7 @@ float roadTop(const Scene& scene, float x) {
 }
 
 TEST(TerrainBridge, ADeckOverAValleyRunsStraightBetweenItsEnds) {
-    // Rims at 30 m beyond |x| = 50, a V down to the floor at 0 m under the bridge's middle.
-    const Scene scene = bridgeScene(fieldOf([](float x) { return 30.0f * std::min(1.0f, std::fabs(x) / 50.0f); }));
+    const Scene scene = bridgeScene(test::fieldOf(valley));
     const float left = roadTop(scene, -49.0f), right = roadTop(scene, 49.0f);
     EXPECT_GT(left, 29.0f);
     EXPECT_GT(right, 29.0f);
@@ -70,7 +64,7 @@ TEST(TerrainBridge, ADeckOverAValleyRunsStraightBetweenItsEnds) {
 }
 
 TEST(TerrainBridge, ItsPiersStandOnTheGround) {
-    TerrainField field = fieldOf([](float x) { return 30.0f * std::min(1.0f, std::fabs(x) / 50.0f); });
+    TerrainField field = test::fieldOf(valley);
     const CityMesh mesh = bridgeMesh(field);
     size_t piers = 0;
     float lowest = INFINITY;   // the least height of a pier's vertex over the ground under it
@@ -86,7 +80,7 @@ TEST(TerrainBridge, ItsPiersStandOnTheGround) {
 
 TEST(TerrainBridge, ADeckOnALevelPlateauLiesAsOnTheFlatGround) {
     const Scene flat = bridgeScene({});
-    const Scene plateau = bridgeScene(fieldOf([](float) { return 30.0f; }));
+    const Scene plateau = bridgeScene(test::fieldOf([](float, float) { return 30.0f; }));
     for (float x = -49.0f; x <= 49.0f; x += 7.0f) EXPECT_NEAR(roadTop(plateau, x), roadTop(flat, x) + 30.0f, 0.01f) << x;
     EXPECT_GT(roadTop(flat, 0.0f), 5.0f);   // the deck's clearance, kept over the plateau
 }

@@ -6,6 +6,7 @@
 #include "citygen/water_on_terrain.h"
 #include "geometry/scene_intersect.h"
 #include "streets/water_depth.h"
+#include "terrain_grids.h"
 
 #include <gtest/gtest.h>
 
@@ -17,12 +18,7 @@ namespace {
 /// Falls 5 cm a metre eastwards with bumps of 1 m every 19 m, and rises to both sides of z = 0.
 float ground(float x, float z) { return 20.0f - 0.05f * x + std::sin(x / 3.0f) + 0.02f * z * z; }
 
-TerrainField slope() {
-    std::vector<float> heights;
-    for (int j = 0; j <= 100; ++j)
-        for (int i = 0; i <= 100; ++i) heights.push_back(ground(-100.0f + 2.0f * float(i), -100.0f + 2.0f * float(j)));
-    return TerrainField::fromSamples(-100, -100, 2, 101, 101, std::move(heights));
-}
+TerrainField slope() { return test::fieldOf(ground); }
 
 /// A stream 3 m wide along z = 0 from x = `from` to x = `to` (its flow), drawn and placed on `field`.
 WaterLevels placeStream(CityMesh& mesh, TerrainField& field, double from, double to) {

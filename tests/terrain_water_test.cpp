@@ -7,6 +7,7 @@
 #include "geometry/scene_intersect.h"
 #include "streets/street_levels.h"
 #include "streets/water_depth.h"
+#include "terrain_grids.h"
 #include "water_scenes.h"
 
 #include <gtest/gtest.h>
@@ -16,14 +17,7 @@
 namespace urbis {
 namespace {
 
-/// A field 2 m apart over [-100, 100]^2 with heights h(x, z).
-template <typename Height>
-TerrainField fieldOf(Height h) {
-    std::vector<float> heights;
-    for (int j = 0; j <= 100; ++j)
-        for (int i = 0; i <= 100; ++i) heights.push_back(h(-100.0f + 2.0f * float(i), -100.0f + 2.0f * float(j)));
-    return TerrainField::fromSamples(-100, -100, 2, 101, 101, std::move(heights));
-}
+using test::fieldOf;
 
 /// `areas` meshed (no buildings) and placed on `field` with their water at its levels; the levels.
 WaterLevels placeWater(CityMesh& mesh, TerrainField& field, const std::vector<Area>& areas) {

@@ -46,6 +46,19 @@ Polygon fromGeos(Handle ctx, const GEOSGeometry* polygon) {
     return out;
 }
 
+/// The polygons of `geometry` (a polygon or a collection), oriented, without closing points; none empty.
+std::vector<Polygon> polygonsOf(Handle ctx, const GEOSGeometry* geometry) {
+    std::vector<Polygon> parts;
+    if (!geometry) return parts;
+    for (int i = 0, n = GEOSGetNumGeometries_r(ctx, geometry); i < n; ++i) {
+        const GEOSGeometry* part = GEOSGetGeometryN_r(ctx, geometry, i);
+        if (GEOSGeomTypeId_r(ctx, part) != GEOS_POLYGON || GEOSisEmpty_r(ctx, part) == 1) continue;
+        Polygon p = fromGeos(ctx, part);
+        if (p.outer.size() >= 3) parts.push_back(std::move(p));
+    }
+    return parts;
+}
+
 } // namespace
 
 GEOSGeometry* geosRing(GEOSContextHandle_t ctx, const Ring& ring) {
@@ -86,15 +99,7 @@ std::vector<Polygon> GeosContext::clipToRectangle(const Polygon& polygon, Vec2d 
     const Handle ctx = handle_;
     const GeometryPtr geometry = toGeos(ctx, polygon);
     const GeometryPtr clipped(GEOSClipByRect_r(ctx, geometry.get(), min.x, min.y, max.x, max.y), GeometryDeleter{ctx});
-    std::vector<Polygon> parts;
-    if (!clipped) return parts;
-    for (int i = 0, n = GEOSGetNumGeometries_r(ctx, clipped.get()); i < n; ++i) {
-        const GEOSGeometry* part = GEOSGetGeometryN_r(ctx, clipped.get(), i);
-        if (GEOSGeomTypeId_r(ctx, part) != GEOS_POLYGON || GEOSisEmpty_r(ctx, part) == 1) continue;
-        Polygon p = fromGeos(ctx, part);
-        if (p.outer.size() >= 3) parts.push_back(std::move(p));
-    }
-    return parts;
+    return polygonsOf(ctx, clipped.get());
 }
 
 std::vector<Polygon> GeosContext::ribbonAround(const std::vector<Vec2d>& line, double halfWidth) const {
@@ -109,14 +114,7 @@ std::vector<Polygon> GeosContext::ribbonAround(const std::vector<Vec2d>& line, d
     if (!path) return parts;
     const GeometryPtr ribbon(GEOSBufferWithStyle_r(ctx, path.get(), halfWidth, 4, GEOSBUF_CAP_FLAT, GEOSBUF_JOIN_ROUND, 5.0),
                              GeometryDeleter{ctx});
-    if (!ribbon) return parts;
-    for (int i = 0, n = GEOSGetNumGeometries_r(ctx, ribbon.get()); i < n; ++i) {
-        const GEOSGeometry* part = GEOSGetGeometryN_r(ctx, ribbon.get(), i);
-        if (GEOSGeomTypeId_r(ctx, part) != GEOS_POLYGON || GEOSisEmpty_r(ctx, part) == 1) continue;
-        Polygon p = fromGeos(ctx, part);
-        if (p.outer.size() >= 3) parts.push_back(std::move(p));
-    }
-    return parts;
+    return polygonsOf(ctx, ribbon.get());
 }
 
 double GeosContext::overlapArea(const Polygon& a, const Polygon& b) const {
