@@ -22,16 +22,19 @@ std::optional<float> BridgesOnTerrain::liftAt(float x, float z) const {
     double nearest = INFINITY;
     float lift = 0;
     for (const SegmentGrid::Segment* seg : grid_.near(p, p)) {
+        const Span& s = spans_[seg->way];
+        const size_t i = seg->end;  // the segment runs from point i - 1 to point i
         const double dx = seg->b.x - seg->a.x, dz = seg->b.y - seg->a.y, len2 = dx * dx + dz * dz;
-        const double u = len2 > 0 ? std::clamp(((p.x - seg->a.x) * dx + (p.y - seg->a.y) * dz) / len2, 0.0, 1.0) : 0.0;
+        const double along = len2 > 0 ? ((p.x - seg->a.x) * dx + (p.y - seg->a.y) * dz) / len2 : 0.0;
+        // Beyond the chain's ends lie its approaches, which follow the ground.
+        if ((i == 1 && along < 0.0) || (i + 1 == s.arc.size() && along > 1.0)) continue;
+        const double u = std::clamp(along, 0.0, 1.0);
         const double d = std::hypot(p.x - (seg->a.x + u * dx), p.y - (seg->a.y + u * dz));
         if (d > seg->reach || d >= nearest) continue;
         nearest = d;
-        const Span& s = spans_[seg->way];
-        const size_t i = seg->end;  // the segment runs from point i - 1 to point i
-        const double along = s.arc[i - 1] + u * (s.arc[i] - s.arc[i - 1]);
+        const double arc = s.arc[i - 1] + u * (s.arc[i] - s.arc[i - 1]);
         const double total = s.arc.back() > 0 ? s.arc.back() : 1.0;
-        const float chord = s.deckStart + float(along / total) * (s.deckEnd - s.deckStart);
+        const float chord = s.deckStart + float(arc / total) * (s.deckEnd - s.deckStart);
         const float e = s.span->elevation[i - 1] + float(u) * (s.span->elevation[i] - s.span->elevation[i - 1]);
         lift = chord - e;
     }

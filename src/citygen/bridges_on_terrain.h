@@ -20,7 +20,8 @@ public:
     /// How far a point of a bridge's structure at world (x, z), meshed on flat ground, rises: the chord
     /// between the deck's heights at its chain's ends, G(end) + e(end), at the point's arc length, less
     /// the deck's elevation e there; or the ground at (x, z) where that is higher. nullopt beyond every
-    /// deck (over half its width from its centerline): the point follows the ground.
+    /// deck (over half its width from its centerline) and beyond its chain's ends: the point follows
+    /// the ground.
     std::optional<float> liftAt(float x, float z) const;
 
 private:
