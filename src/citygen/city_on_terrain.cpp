@@ -131,7 +131,8 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
         }
         if (info.part == uint32_t(SurfacePart::Water)) {
             // A water body lies at its surface (flat, or falling along a river's line), over the
-            // terrain that is its bed; a river's surface in pieces short enough to follow its fall.
+            // terrain that is its bed; a river's surface in pieces down to a quarter of a sample
+            // spacing, so that it follows its fall (a running minimum, with kinks) within a few cm.
             if (const auto level = water.find(info.object); level != water.end()) {
                 if (mesh.materials[info.material].kind != MaterialKind::Water) {
                     --mesh.trianglesByKind["water"];   // the flat ground's bed: the terrain replaces it
@@ -140,7 +141,7 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
                 Triangle t = tris.triangles[i];
                 t.p0.y = t.p1.y = t.p2.y = 0.0f;
                 pieces.clear();
-                liftStreetTriangle(t, [&](Vec3f p) { return level->second.at(p.x, p.z); }, edge, pieces);
+                liftStreetTriangle(t, [&](Vec3f p) { return level->second.at(p.x, p.z); }, 0.25f * terrain.record.cell, pieces);
                 for (const Triangle& piece : pieces) lifted.add(piece, info);
                 continue;
             }
