@@ -96,7 +96,9 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "geometry.trees", "terrain", "terrain.kind", "terrain.dem", "terrain.march", "terrain.interpolation",
         "terrain.size", "terrain.cell", "terrain.detail", "terrain.fade", "terrain.fbm", "terrain.fbm.seed",
         "terrain.fbm.octaves", "terrain.fbm.wavelength", "terrain.fbm.amplitude", "terrain.fbm.lacunarity",
-        "terrain.fbm.gain", "terrain.fbm.erosion", "terrain.fbm.warp", "terrain.fbm.offset", "terrain.materials",
+        "terrain.fbm.gain", "terrain.fbm.erosion", "terrain.fbm.warp", "terrain.fbm.offset", "terrain.dual", "terrain.dual.enabled",
+        "terrain.dual.seed", "terrain.dual.wavelength", "terrain.dual.amplitude", "terrain.dual.offset",
+        "terrain.dual.mask_wavelength", "terrain.materials",
         "terrain.materials.sand_level", "terrain.materials.snow_level", "terrain.materials.rock_slope",
         "terrain.lei", "terrain.lei.a", "terrain.lei.b", "terrain.lei.c", "terrain.lei.bisections",
         "terrain.reference_step", "water", "water.enabled", "water.max_depth", "water.shelf_width", "water.absorption",
@@ -112,7 +114,8 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
     geo.camera.geo = GeoCameraDescription{};
     keys.clear();
     collectKeys(sceneToJson(geo), "", keys);
-    for (const char* key : {"camera.geo.lon", "camera.geo.lat", "camera.geo.altitude", "camera.geo.heading", "camera.geo.pitch"})
+    for (const char* key : {"camera.geo.lon", "camera.geo.lat", "camera.geo.altitude", "camera.geo.heading", "camera.geo.pitch",
+                            "camera.geo.above_ground"})
         EXPECT_TRUE(keys.count(key)) << key;
     // A planet's own keys, once it is set (docs/planets.md).
     SceneDescription planet;

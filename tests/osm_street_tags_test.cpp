@@ -352,6 +352,25 @@ TEST(StreetTagsArea, KindsAndPriority) {
     for (const auto& [tags, kind] : cases) EXPECT_EQ(areaKindFromTags(tagsOf(tags)), kind) << describe(tags);
 }
 
+TEST(StreetTagsArea, WaterwayLinesAndTheirWidths) {
+    const std::vector<std::pair<Tags, std::optional<float>>> cases = {
+        {{{"waterway", "river"}}, 12.0f},
+        {{{"waterway", "canal"}}, 8.0f},
+        {{{"waterway", "stream"}}, 3.0f},
+        {{{"waterway", "drain"}}, 1.5f},
+        {{{"waterway", "ditch"}}, 1.5f},
+        {{{"waterway", "stream"}, {"width", "4.5"}}, 4.5f},
+        {{{"waterway", "river"}, {"width", "30 m"}}, 30.0f},
+        {{{"waterway", "river"}, {"width", "wide"}}, 12.0f},     // unparsable: the kind's default
+        {{{"waterway", "stream"}, {"tunnel", "culvert"}}, std::nullopt},
+        {{{"waterway", "stream"}, {"tunnel", "no"}}, 3.0f},
+        {{{"waterway", "riverbank"}}, std::nullopt},             // an area, not a line
+        {{{"waterway", "dam"}}, std::nullopt},
+        {{{"natural", "water"}}, std::nullopt},
+    };
+    for (const auto& [tags, width] : cases) EXPECT_EQ(waterwayWidthFromTags(tagsOf(tags)), width) << describe(tags);
+}
+
 TEST(StreetTagsLamp, MountHeadHeightAndColour) {
     using M = LampMount;
     using H = LampHead;

@@ -37,6 +37,15 @@ TEST(TagParsing, BadLengthsAreMissing) {
         EXPECT_FALSE(parseLength(text).has_value()) << text;
 }
 
+TEST(TagParsing, ElevationsAboveSeaLevel) {
+    EXPECT_EQ(parseElevation("12"), 12.0);
+    EXPECT_EQ(parseElevation("12,5 m"), 12.5);
+    EXPECT_EQ(parseElevation("-28"), -28.0);
+    EXPECT_NEAR(*parseElevation("1000 ft"), 304.8, 1e-9);
+    for (const char* text : {"", "high", "12 km", "12;15", "9001", "-501", "nan", "inf", "12 m high"})
+        EXPECT_FALSE(parseElevation(text).has_value()) << text;
+}
+
 TEST(TagParsing, LevelsDirectionsAndTemperatures) {
     EXPECT_EQ(parseLevels("3"), 3.0);
     EXPECT_EQ(parseLevels("2,5"), 2.5);

@@ -10,6 +10,7 @@
 #include "nature/tree_mesher.h"
 #include "scene/camera.h"
 #include "terrain/dem_raster.h"
+#include "terrain/dual_heightmap.h"
 #include "terrain/march_accuracy.h"
 #include "terrain/terrain_build.h"
 
@@ -107,6 +108,44 @@ TEST(TerrainHierarchy, BoundsContainEverySampleAndTheLevelBelow) {
             }
 }
 
+TEST(TerrainFbm, TheDualHeightmapBlendsASecondLandscapeByItsMask) {
+    TerrainParams params = smallFbm();
+    params.size = 4000;
+    params.cell = 20;
+    params.fade = 0;
+    const TerrainField single = buildTerrain(params, GeoOrigin{}, 0, 0, 0);
+    params.dual.enabled = true;
+    params.dual.maskWavelength = 800;
+    const TerrainField dual = buildTerrain(params, GeoOrigin{}, 0, 0, 0);
+    const FbmParams second = secondLandscape(params.fbm, params.dual);
+    size_t first = 0, other = 0, blended = 0;
+    const TerrainRecord& r = dual.record;
+    for (uint32_t j = 0; j < r.nz; ++j)
+        for (uint32_t i = 0; i < r.nx; ++i) {
+            const Vec2f p{r.x0 + r.cell * float(i), r.z0 + r.cell * float(j)};
+            const float m = dualMask(params.dual, p), h1 = single.data[size_t(j) * r.nx + i];
+            const float h2 = std::max(0.0f, fbmTerrainHeight(second, p));
+            const float h = dual.data[size_t(j) * r.nx + i];
+            ASSERT_GE(m, 0.0f);
+            ASSERT_LE(m, 1.0f);
+            // Heights below 0 are raised to 0: blend the unclamped landscapes, then clamp.
+            EXPECT_NEAR(h, std::max(0.0f, (1 - m) * fbmTerrainHeight(params.fbm, p) + m * fbmTerrainHeight(second, p)), 1e-3f);
+            if (m == 0.0f) {
+                EXPECT_EQ(h, h1);
+                ++first;
+            } else if (m == 1.0f) {
+                EXPECT_NEAR(h, h2, 1e-3f);
+                ++other;
+            } else {
+                ++blended;
+            }
+        }
+    // Both kinds of land, and the seams between them, appear over 5 mask wavelengths.
+    EXPECT_GT(first, r.nx * r.nz / 10);
+    EXPECT_GT(other, r.nx * r.nz / 10);
+    EXPECT_GT(blended, 0u);
+}
+
 TEST(TerrainMarch, HierarchyMissesNothingTheReferenceFindsAndIsExactInHeight) {
     const TerrainField field = buildTerrain(smallFbm(), GeoOrigin{}, 0, 0, 0);
     const std::vector<Ray> rays = viewRays(field, 96, 54);
@@ -119,6 +158,12 @@ TEST(TerrainMarch, HierarchyMissesNothingTheReferenceFindsAndIsExactInHeight) {
     // The goal: HDE under 1 cm at 1 km (the view's hits lie within 1.5 km).
     EXPECT_LT(a.maxHde, 0.01);
     EXPECT_LT(a.meanIde, 0.25) << "within the reference's step";
+    // By distance: the hits within 1 km, apart, hold the goal too; the bands count every hit once.
+    EXPECT_GT(a.byDistance[0].hits, 0u);
+    EXPECT_LT(a.byDistance[0].maxHde, 0.01);
+    size_t banded = 0;
+    for (const HdeBand& band : a.byDistance) banded += band.hits;
+    EXPECT_EQ(banded, a.hits);
     // The Cambridge rule at loose parameters steps over ridges: the measure must see it.
     TerrainField loose = field;
     loose.record.leiA = 20.0f, loose.record.leiC = 1.0f;

@@ -7,6 +7,7 @@
 #include "geometry/scene_intersect.h"
 #include "streets/street_levels.h"
 #include "streets/water_depth.h"
+#include "terrain_grids.h"
 #include "water_scenes.h"
 
 #include <gtest/gtest.h>
@@ -16,14 +17,7 @@
 namespace urbis {
 namespace {
 
-/// A field 2 m apart over [-100, 100]^2 with heights h(x, z).
-template <typename Height>
-TerrainField fieldOf(Height h) {
-    std::vector<float> heights;
-    for (int j = 0; j <= 100; ++j)
-        for (int i = 0; i <= 100; ++i) heights.push_back(h(-100.0f + 2.0f * float(i), -100.0f + 2.0f * float(j)));
-    return TerrainField::fromSamples(-100, -100, 2, 101, 101, std::move(heights));
-}
+using test::fieldOf;
 
 /// `areas` meshed (no buildings) and placed on `field` with their water at its levels; the levels.
 WaterLevels placeWater(CityMesh& mesh, TerrainField& field, const std::vector<Area>& areas) {
@@ -52,7 +46,7 @@ TEST(TerrainWater, ALakeLiesAtTheLowestGroundOfItsShoreOverTheCarvedTerrain) {
     CityMesh mesh;
     const WaterLevels levels = placeWater(mesh, field, {test::squareArea(AreaKind::Water, 20)});
     ASSERT_EQ(levels.size(), 1u);
-    const float level = levels.begin()->second;
+    const float level = levels.begin()->second.level;
     EXPECT_NEAR(level, 12.0f, 1e-4f);
 
     // Samples under the water lie below the level by the bank's profile; those outside are untouched.
@@ -115,6 +109,23 @@ TEST(TerrainWater, ALakeLiesAtTheLowestGroundOfItsShoreOverTheCarvedTerrain) {
     }
 }
 
+TEST(TerrainWater, AnOsmEleSetsTheLevel) {
+    // The same pond in the bowl, tagged ele=13.5: its level, not its shore's lowest ground (12 m).
+    auto bowl = [](float x, float z) { return 10.0f + 0.005f * (x * x + z * z); };
+    TerrainField field = fieldOf(bowl);
+    Area pond = test::squareArea(AreaKind::Water, 20);
+    pond.ele = 13.5f;
+    CityMesh mesh;
+    const WaterLevels levels = placeWater(mesh, field, {pond});
+    ASSERT_EQ(levels.size(), 1u);
+    EXPECT_EQ(levels.begin()->second.level, 13.5f);
+    const Scene scene = buildCityScene(mesh, {}, {}, field);
+    const SurfaceHit water = downFrom(scene.view(), 0.0f, 50.0f, 0.0f);
+    ASSERT_TRUE(isWater(scene, water));
+    EXPECT_NEAR(50.0f - water.t, 13.5f, 1e-4f);
+    EXPECT_NEAR(field.heightAt(0, 0), 13.5f - WaterOptions{}.maxDepth, 1e-4f);   // the bed below that level
+}
+
 TEST(TerrainWater, TheSeaLiesOverTheFlatGroundAndItsBedBelowItOnTheGrid) {
     // Flat land at 0 on the grid; the sea covers x < 0 far beyond it.
     TerrainField field = fieldOf([](float, float) { return 0.0f; });
@@ -124,7 +135,7 @@ TEST(TerrainWater, TheSeaLiesOverTheFlatGroundAndItsBedBelowItOnTheGrid) {
     CityMesh mesh;
     const WaterLevels levels = placeWater(mesh, field, {sea});
     ASSERT_EQ(levels.size(), 1u);
-    EXPECT_EQ(levels.begin()->second, kWaterLevel);
+    EXPECT_EQ(levels.begin()->second.level, kWaterLevel);
     const Scene scene = buildCityScene(mesh, {}, {}, field);
     const SceneView view = scene.view();
     // On the grid the plane y = 0 is open: the bed is the terrain, a shelf out at the full depth.

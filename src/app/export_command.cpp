@@ -84,7 +84,8 @@ void runExport(const ExportCommandLine& line) {
     meshOptions.litRoomLooks = true;
     CityMesh mesh = meshCity(city, meshOptions);
     const TerrainField terrain = cityTerrainOf(d.terrain, city.origin, mesh);
-    const Camera camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces);
+    const Camera camera =
+        cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces, groundOf(terrain));
     ExportScene scene = exportSceneOf(city, mesh, terrain, camera, celestialLightsOf(d, city.origin).sun);
     scene.extras["lod"] = o.lod;
     if (!line.scene.saveScenePath().empty()) writeSceneFile(d, line.scene.saveScenePath());

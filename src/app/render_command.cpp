@@ -120,7 +120,8 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
         terrain = cityTerrainOf(d.terrain, city.origin, mesh, d.water);
         p.secondsCitygen = secondsSince(t0);
 
-        p.camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces);
+        p.camera = cameraOf(d.camera, float(d.film.width) / float(d.film.height), city.origin, mesh.framingPieces,
+                            groundOf(terrain));
         checkCamera(strict, p.camera, city, mesh.cityBounds);
         p.origin = city.origin;
         p.windowUses.reserve(city.buildings.size());

@@ -122,7 +122,8 @@ void renderFrames(const RenderOptions& o, PreparedScene& prepared, const std::ve
                     lightScene(prepared.scene, d, prepared.origin);
                     backend.relight();
                 }
-                camera = cameraOf(d.camera, float(film.width) / float(film.height), prepared.origin, prepared.framingPieces);
+                camera = cameraOf(d.camera, float(film.width) / float(film.height), prepared.origin, prepared.framingPieces,
+                                  groundOf(prepared.scene));
                 output = FilmOutputOptions{d.film.exposure, film.exrFloat, layers};
             }
             Film image(settings.width, settings.height, aovs);

@@ -87,10 +87,19 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
              d.camera.geo.reset();
          });
     CLI::Option* geo =
-        bind(cmd, "--camera-geo", text_.cameraGeo, "LON,LAT,ALTITUDE,HEADING,PITCH (OSM only; degrees, metres)",
+        bind(cmd, "--camera-geo", text_.cameraGeo,
+             "LON,LAT,ALTITUDE,HEADING,PITCH (OSM only; degrees, metres above y = 0, sea level on a DEM; "
+             "ALTITUDE with the suffix agl, as 50agl: metres above the terrain under the camera)",
              [](SceneDescription& d, const std::string& text) {
-                 std::vector<double> c = parseNumberList("--camera-geo", text, ',', 5, 5);
-                 d.camera.geo = GeoCameraDescription{c[0], c[1], float(c[2]), float(c[3]), float(c[4])};
+                 // ALTITUDE may end in "agl" (above ground level): the third field, before its comma.
+                 std::string numbers = text;
+                 size_t third = numbers.find(',');
+                 if (third != std::string::npos) third = numbers.find(',', third + 1);
+                 const size_t end = third == std::string::npos ? std::string::npos : numbers.find(',', third + 1);
+                 const bool agl = end != std::string::npos && end >= third + 4 && numbers.compare(end - 3, 3, "agl") == 0;
+                 if (agl) numbers.erase(end - 3, 3);
+                 std::vector<double> c = parseNumberList("--camera-geo", numbers, ',', 5, 5);
+                 d.camera.geo = GeoCameraDescription{c[0], c[1], float(c[2]), float(c[3]), float(c[4]), agl};
                  d.camera.position.reset();
                  d.camera.target.reset();
              });

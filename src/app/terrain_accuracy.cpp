@@ -102,6 +102,13 @@ void runTerrainAccuracy(const BenchOptions& o, bool onGpu, const std::string& de
         json["methods"][name] = {{"hits", a.hits}, {"missed_intersections", a.missed}, {"extra_intersections", a.extra},
                                  {"mean_hde_m", a.meanHde}, {"max_hde_m", a.maxHde}, {"mean_ide_m", a.meanIde},
                                  {"max_ide_m", a.maxIde}, {"median_ms", medianOf(ms)}, {"ms", ms}};
+        for (const HdeBand& band : a.byDistance) {
+            std::printf("%-10s   hits %.0f-%s m away: %zu, mean HDE %.3g m, max %.3g m\n", "", band.from,
+                        std::isfinite(band.to) ? std::to_string(int(band.to)).c_str() : "", band.hits, band.meanHde, band.maxHde);
+            json["methods"][name]["hde_by_distance"].push_back(
+                {{"from_m", band.from}, {"to_m", std::isfinite(band.to) ? nlohmann::json(band.to) : nlohmann::json()},
+                 {"hits", band.hits}, {"mean_hde_m", band.meanHde}, {"max_hde_m", band.maxHde}});
+        }
     }
     if (!o.jsonFile.empty()) writeTextFileAtomically(o.jsonFile, json.dump(2) + "\n");
 }

@@ -56,7 +56,7 @@ float ViewSession::probe(Vec3f origin, Vec3f dir, float maxDistance) const {
 
 Camera ViewSession::renderCamera() const {
     return cameraOf(scene_.camera, float(scene_.film.width) / float(scene_.film.height), prepared_->origin,
-                    prepared_->framingPieces);
+                    prepared_->framingPieces, groundOf(prepared_->scene));
 }
 
 void ViewSession::sceneToCamera() {
@@ -165,7 +165,7 @@ bool ViewSession::screenshot(const std::string& path, uint32_t width, uint32_t h
             requireMemory(hostFilmBytes(shot.film.width, shot.film.height, aovs), memoryLimit_, "the screenshot");
             const RenderSettings settings = renderSettingsOf(shot.integrator, shot.film);
             const Camera camera = cameraOf(shot.camera, float(shot.film.width) / float(shot.film.height),
-                                           prepared_->origin, prepared_->framingPieces);
+                                           prepared_->origin, prepared_->framingPieces, groundOf(prepared_->scene));
             Film film(settings.width, settings.height, aovs);
             RenderCounters counters;
             DeviceReport device;

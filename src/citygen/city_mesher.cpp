@@ -162,6 +162,9 @@ uint32_t addStreets(const CityModel& city, const CityMeshOptions& options, CityM
     out.mesh.append(streets.mesh);
     out.roadSegments = std::move(streets.roadSegments);
     out.lamps = std::move(streets.lamps);
+    out.bridgeSpans = std::move(streets.bridgeSpans);
+    out.waterElevations = std::move(streets.waterElevations);
+    out.waterFlows = std::move(streets.waterFlows);
     for (const auto& [kind, n] : streets.trianglesByKind) out.trianglesByKind[kind] += n;
     for (const auto& [reason, n] : streets.dropped) out.dropped[reason] += n;
     out.streetCounts = std::move(streets.counts);

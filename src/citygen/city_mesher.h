@@ -14,6 +14,7 @@
 #include "nature/tree_options.h"
 #include "scene/forest_record.h"
 #include "scene/tree_record.h"
+#include "streets/bridge_spans.h"
 #include "streets/traffic_side.h"
 #include "streets/water_options.h"
 
@@ -54,6 +55,9 @@ struct CityMesh {
     std::vector<WallRecord> walls;             ///< procedural walls (empty with walls=triangles)
     std::vector<RoadSegment> roadSegments;     ///< the carriageways' markings (streets/street_mesh.h)
     std::vector<LampRecord> lamps;             ///< procedural street lamps (empty with lamps=triangles)
+    std::vector<BridgeSpan> bridgeSpans;       ///< bridges' decks (streets/bridge_spans.h), for a terrain
+    std::map<uint32_t, float> waterElevations; ///< OSM `ele` of water bodies by object id: their level on a terrain
+    std::map<uint32_t, std::vector<Vec2d>> waterFlows;  ///< rivers drawn from lines: their flow (world x, z) by object id
     std::vector<Material> materials;
     uint32_t groundMaterial = 0;               ///< the ground plane's entry in materials
     Bounds3f cityBounds;                       ///< world bounds of the buildings (ground and streets excluded)

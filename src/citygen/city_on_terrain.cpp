@@ -1,5 +1,7 @@
 #include "citygen/city_on_terrain.h"
 
+#include "citygen/bridges_on_terrain.h"
+#include "citygen/street_grades.h"
 #include "scene/surface_part.h"
 
 #include <algorithm>
@@ -54,26 +56,27 @@ constexpr float kBaseTolerance = 0.01f;
 /// How far (metres) the ground may bulge from a street triangle's plane before it is split.
 constexpr float kStreetTolerance = 0.05f;
 
-/// `t` lifted onto `terrain` vertex by vertex, split in four at its edges' midpoints while an edge
-/// is longer than `edge` and the ground at a midpoint or the centre lies over kStreetTolerance off
-/// the lifted triangle's plane; into `out`. Flat ground (beyond the grid, on a plain) keeps it whole.
-void liftStreetTriangle(const Triangle& t, const TerrainField& terrain, float edge, std::vector<Triangle>& out) {
+/// `t` lifted vertex by vertex by `lift(p)` (the ground under p, or a bridge's lift), split in four at
+/// its edges' midpoints while an edge is longer than `edge` and the lift at a midpoint or the centre
+/// lies over kStreetTolerance off the lifted triangle's plane; into `out`. Flat ground (beyond the
+/// grid, on a plain) keeps it whole.
+template <typename Lift>
+void liftStreetTriangle(const Triangle& t, const Lift& lift, float edge, std::vector<Triangle>& out) {
     auto len2 = [](Vec3f a, Vec3f b) { return (a.x - b.x) * (a.x - b.x) + (a.z - b.z) * (a.z - b.z); };
-    auto ground = [&](Vec3f p) { return terrain.heightAt(p.x, p.z); };
-    const float g0 = ground(t.p0), g1 = ground(t.p1), g2 = ground(t.p2);
+    const float g0 = lift(t.p0), g1 = lift(t.p1), g2 = lift(t.p2);
     const Vec3f a = (t.p0 + t.p1) * 0.5f, b = (t.p1 + t.p2) * 0.5f, c = (t.p2 + t.p0) * 0.5f;
     const Vec3f m = (t.p0 + t.p1 + t.p2) * (1.0f / 3.0f);
-    const float off = std::max({std::fabs(ground(a) - 0.5f * (g0 + g1)), std::fabs(ground(b) - 0.5f * (g1 + g2)),
-                                std::fabs(ground(c) - 0.5f * (g2 + g0)), std::fabs(ground(m) - (g0 + g1 + g2) / 3.0f)});
+    const float off = std::max({std::fabs(lift(a) - 0.5f * (g0 + g1)), std::fabs(lift(b) - 0.5f * (g1 + g2)),
+                                std::fabs(lift(c) - 0.5f * (g2 + g0)), std::fabs(lift(m) - (g0 + g1 + g2) / 3.0f)});
     const float longest = std::max({len2(t.p0, t.p1), len2(t.p1, t.p2), len2(t.p2, t.p0)});
     if (longest <= edge * edge || off <= kStreetTolerance) {
         out.push_back({{t.p0.x, t.p0.y + g0, t.p0.z}, {t.p1.x, t.p1.y + g1, t.p1.z}, {t.p2.x, t.p2.y + g2, t.p2.z}});
         return;
     }
-    liftStreetTriangle({t.p0, a, c}, terrain, edge, out);
-    liftStreetTriangle({a, t.p1, b}, terrain, edge, out);
-    liftStreetTriangle({c, b, t.p2}, terrain, edge, out);
-    liftStreetTriangle({a, b, c}, terrain, edge, out);
+    liftStreetTriangle({t.p0, a, c}, lift, edge, out);
+    liftStreetTriangle({a, t.p1, b}, lift, edge, out);
+    liftStreetTriangle({c, b, t.p2}, lift, edge, out);
+    liftStreetTriangle({a, b, c}, lift, edge, out);
 }
 
 /// How far each tree twin (by object) rises: the ground's height under its trunk's foot, the middle of
@@ -140,6 +143,7 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
     std::vector<Triangle> pieces;
     const float edge = streetEdgeOnTerrain(terrain);
     const std::unordered_map<uint32_t, float> trees = treeLifts(tris, terrain);
+    const BridgesOnTerrain bridges(mesh.bridgeSpans, terrain);
     for (size_t i = 0; i < tris.size(); ++i) {
         const TriangleInfo info = tris.info[i];
         if (isTreePart(info.part)) {  // a tree twin rises as a whole, as its record does
@@ -157,21 +161,34 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
             continue;
         }
         if (info.part == uint32_t(SurfacePart::Water)) {
-            // A water body with a level lies flat at it, over the terrain that is its bed.
+            // A water body lies at its surface (flat, or falling along a river's line), over the
+            // terrain that is its bed; a river's surface in pieces down to a quarter of a sample
+            // spacing, so that it follows its fall (a running minimum, with kinks) within a few cm.
             if (const auto level = water.find(info.object); level != water.end()) {
                 if (mesh.materials[info.material].kind != MaterialKind::Water) {
                     --mesh.trianglesByKind["water"];   // the flat ground's bed: the terrain replaces it
                     continue;
                 }
                 Triangle t = tris.triangles[i];
-                t.p0.y = t.p1.y = t.p2.y = level->second;
-                lifted.add(t, info);
+                t.p0.y = t.p1.y = t.p2.y = 0.0f;
+                pieces.clear();
+                liftStreetTriangle(t, [&](Vec3f p) { return level->second.at(p.x, p.z); }, 0.25f * terrain.record.cell, pieces);
+                for (const Triangle& piece : pieces) lifted.add(piece, info);
                 continue;
             }
         }
-        // Street surfaces follow the ground vertex by vertex, in pieces short enough to stay on it.
+        // Street surfaces follow the ground vertex by vertex, in pieces short enough to stay on it; a
+        // bridge's (a triangle above kAtGround over a deck) its deck's lift, a pier's foot the ground.
+        const Triangle& flat = tris.triangles[i];
+        const bool raised = std::max({flat.p0.y, flat.p1.y, flat.p2.y}) >= kAtGround;
+        const bool pier = info.part == uint32_t(SurfacePart::Pier);
+        auto streetLift = [&](Vec3f p) {
+            if (raised && !(pier && p.y < kAtGround))
+                if (const std::optional<float> deck = bridges.liftAt(p.x, p.z)) return *deck;
+            return terrain.heightAt(p.x, p.z);
+        };
         pieces.clear();
-        liftStreetTriangle(tris.triangles[i], terrain, edge, pieces);
+        liftStreetTriangle(flat, streetLift, edge, pieces);
         for (const Triangle& t : pieces) lifted.add(t, info);
     }
     tris = std::move(lifted);
@@ -187,7 +204,10 @@ void placeCityOnTerrain(CityMesh& mesh, const TerrainField& terrain, const Water
             w.origin.y += l.entrance;
         }
     }
-    for (LampRecord& lamp : mesh.lamps) lamp.base.y += terrain.heightAt(lamp.base.x, lamp.base.z);
+    for (LampRecord& lamp : mesh.lamps) {
+        const std::optional<float> deck = lamp.base.y >= kAtGround ? bridges.liftAt(lamp.base.x, lamp.base.z) : std::nullopt;
+        lamp.base.y += deck ? *deck : terrain.heightAt(lamp.base.x, lamp.base.z);
+    }
     for (TreeRecord& tree : mesh.trees) tree.base.y += terrain.heightAt(tree.base.x, tree.base.z);
     mesh.forests = forestTilesOnTerrain(mesh.forests, terrain);
     // The framing follows the ground under each piece; the city's bounds take every building's lift.

@@ -40,7 +40,46 @@ std::vector<ShoreEdge> shoreOf(const std::vector<Triangle>& surface) {
     return shore;
 }
 
+/// A river's surface along `flow` (world x, z): points every `step` metres, each the ground there or
+/// the point before it, whichever is lower, and kWaterLevel at least.
+WaterLevel riverLevel(const std::vector<Vec2d>& flow, const TerrainField& terrain, float step) {
+    WaterLevel river;
+    float lowest = INFINITY;
+    auto add = [&](Vec2d p) {
+        lowest = std::min(lowest, std::max(kWaterLevel, terrain.heightAt(float(p.x), float(p.y))));
+        river.line.push_back(p);
+        river.heights.push_back(lowest);
+    };
+    add(flow.front());
+    for (size_t i = 1; i < flow.size(); ++i) {
+        const Vec2d a = flow[i - 1], b = flow[i];
+        const int steps = std::max(1, int(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / step)));
+        for (int k = 1; k <= steps; ++k) {
+            const double f = double(k) / double(steps);
+            add({a.x + (b.x - a.x) * f, a.y + (b.y - a.y) * f});
+        }
+    }
+    river.level = lowest;
+    return river;
+}
+
 } // namespace
+
+float WaterLevel::at(float x, float z) const {
+    if (line.size() < 2) return level;
+    double nearest = INFINITY;
+    float height = level;
+    for (size_t i = 1; i < line.size(); ++i) {
+        const Vec2d a = line[i - 1], d{line[i].x - a.x, line[i].y - a.y};
+        const double len2 = d.x * d.x + d.y * d.y;
+        const double u = len2 > 0 ? std::clamp(((x - a.x) * d.x + (z - a.y) * d.y) / len2, 0.0, 1.0) : 0.0;
+        const double dist = std::hypot(x - (a.x + u * d.x), z - (a.y + u * d.y));
+        if (dist >= nearest) continue;
+        nearest = dist;
+        height = heights[i - 1] + float(u) * (heights[i] - heights[i - 1]);
+    }
+    return height;
+}
 
 std::map<uint32_t, std::vector<Triangle>> waterSurfacesOf(const CityMesh& mesh) {
     std::map<uint32_t, std::vector<Triangle>> surfaces;
@@ -55,6 +94,14 @@ WaterLevels waterLevelsOn(const CityMesh& mesh, const TerrainField& terrain) {
     WaterLevels levels;
     const float step = 0.5f * terrain.record.cell;
     for (const auto& [object, surface] : waterSurfacesOf(mesh)) {
+        if (const auto flow = mesh.waterFlows.find(object); flow != mesh.waterFlows.end() && flow->second.size() >= 2) {
+            levels[object] = riverLevel(flow->second, terrain, step);
+            continue;
+        }
+        if (const auto ele = mesh.waterElevations.find(object); ele != mesh.waterElevations.end()) {
+            levels[object].level = ele->second;
+            continue;
+        }
         float lowest = INFINITY;
         for (const ShoreEdge& e : shoreOf(surface)) {
             const int steps = std::max(1, int(std::ceil(length(e.b - e.a) / step)));
@@ -63,7 +110,7 @@ WaterLevels waterLevelsOn(const CityMesh& mesh, const TerrainField& terrain) {
                 lowest = std::min(lowest, terrain.heightAt(p.x, p.z));
             }
         }
-        levels[object] = std::max(kWaterLevel, lowest);
+        levels[object].level = std::max(kWaterLevel, lowest);
     }
     return levels;
 }
@@ -76,7 +123,7 @@ void carveWaterBeds(TerrainField& terrain, const CityMesh& mesh, const WaterLeve
     };
     const float shelf = std::max(options.shelfWidth, 0.0f);
     for (const auto& [object, surface] : waterSurfacesOf(mesh)) {
-        const float level = levels.at(object);
+        const WaterLevel& level = levels.at(object);
         // Distance to the shore of the samples within a shelf of it; farther ones lie at maxDepth.
         Bounds3f box;
         for (const Triangle& t : surface) box.extend(primBounds(t));
@@ -104,7 +151,7 @@ void carveWaterBeds(TerrainField& terrain, const CityMesh& mesh, const WaterLeve
                 for (int i = a0; i <= a1; ++i) {
                     const float x = r.x0 + r.cell * float(i), z = r.z0 + r.cell * float(j);
                     if (!insidePlaneTriangle(t, x, z)) continue;
-                    const float bed = level - waterBedDepth(distance[size_t(j - j0) * w + size_t(i - i0)], options);
+                    const float bed = level.at(x, z) - waterBedDepth(distance[size_t(j - j0) * w + size_t(i - i0)], options);
                     float& h = heights[size_t(j) * r.nx + size_t(i)];
                     h = std::min(h, bed);
                 }

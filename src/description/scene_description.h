@@ -48,9 +48,10 @@ struct SourceDescription {
 /// A camera placed by geography: at a longitude, latitude and altitude, looking along a heading.
 struct GeoCameraDescription {
     double lon = 0, lat = 0;   ///< degrees, WGS84
-    float altitude = 100;      ///< metres above the ground plane
+    float altitude = 100;      ///< metres above the ground plane (y = 0: sea level on a DEM)
     float heading = 0;         ///< degrees clockwise from north
     float pitch = -20;         ///< degrees above the horizon (negative looks down)
+    bool aboveGround = false;  ///< altitude above the terrain under the camera instead (`agl`)
 };
 
 /// The camera: a position and target in world metres, or a geographic placement (OSM only), or

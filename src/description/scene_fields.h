@@ -48,6 +48,7 @@ void visitSceneFields(Description& d, Visitor& v) {
             v.number("altitude", geo.altitude, -1e5f, 1e7f);
             v.number("heading", geo.heading, -360.0f, 360.0f);
             v.number("pitch", geo.pitch, -90.0f, 90.0f);
+            v.boolean("above_ground", geo.aboveGround);
         });
         v.number("fov", d.camera.fov, 1.0f, 170.0f);
     });

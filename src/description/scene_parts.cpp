@@ -5,6 +5,8 @@
 #include "base/input_error.h"
 #include "osm/geo_projection.h"
 #include "scene/camera_framing.h"
+#include "scene/scene.h"
+#include "scene/terrain_field.h"
 
 #include <algorithm>
 #include <cmath>
@@ -105,14 +107,26 @@ uint32_t filmLayerMaskOf(const std::vector<std::string>& layers) {
     return mask;
 }
 
+GroundHeight groundOf(const TerrainField& terrain) {
+    if (terrain.empty()) return {};
+    return [&terrain](float x, float z) { return terrain.heightAt(x, z); };
+}
+
+GroundHeight groundOf(const Scene& scene) {
+    if (scene.terrains.empty()) return {};
+    return [&scene](float x, float z) { return terrainHeight(scene.terrains[0], scene.terrainData.data(), x, z); };
+}
+
 Camera cameraOf(const CameraDescription& camera, float aspect, const GeoOrigin& origin,
-                std::span<const Bounds3f> framingPieces) {
+                std::span<const Bounds3f> framingPieces, const GroundHeight& groundAt) {
     if (camera.position && camera.target) return makeLookAtCamera(*camera.position, *camera.target, camera.fov, aspect);
     if (camera.geo) {
         if (!origin.valid) throw InputError("--camera-geo (camera.geo): needs a city imported from OSM", FailureKind::Usage);
         const GeoCameraDescription& g = *camera.geo;
-        Vec2d local = GeoProjection(LonLat{origin.lon, origin.lat}).project(LonLat{g.lon, g.lat});
-        return cameraFromHeading(Vec3f{float(local.x), g.altitude, float(-local.y)}, g.heading, g.pitch, camera.fov, aspect);
+        const Vec2d local = GeoProjection(LonLat{origin.lon, origin.lat}).project(LonLat{g.lon, g.lat});
+        const float x = float(local.x), z = float(-local.y);
+        const float ground = g.aboveGround && groundAt ? groundAt(x, z) : 0.0f;
+        return cameraFromHeading(Vec3f{x, g.altitude + ground, z}, g.heading, g.pitch, camera.fov, aspect);
     }
     return frameCity(framingPieces, camera.fov, aspect);
 }

@@ -12,6 +12,7 @@
 #include "scene/camera.h"
 #include "scene/render_settings.h"
 
+#include <functional>
 #include <span>
 
 namespace urbis {
@@ -44,10 +45,23 @@ void applyPhotonSettings(const PhotonsDescription& photons, RenderSettings& sett
 /// The layer mask (film/film_layers.h) of film.layers' names.
 uint32_t filmLayerMaskOf(const std::vector<std::string>& layers);
 
+struct Scene;
+struct TerrainField;
+
+/// The ground's height (m) at world (x, z): a terrain's, or 0 (the ground plane).
+using GroundHeight = std::function<float(float x, float z)>;
+
+/// `terrain`'s height (terrainHeight) where it is not empty, else 0; holds a reference to it.
+GroundHeight groundOf(const TerrainField& terrain);
+
+/// The height of `scene`'s terrain (its first), or 0 without one; holds a reference to the scene.
+GroundHeight groundOf(const Scene& scene);
+
 /// The camera `camera` describes for an image of `aspect` (width / height): looking from position
-/// at target; placed by geography around `origin` (the imported city's; InputError if invalid); or
+/// at target; placed by geography around `origin` (the imported city's; InputError if invalid), its
+/// altitude above `groundAt` under it where the placement says aboveGround (none: above y = 0); or
 /// else framing the city's `framingPieces` (frameCity).
 Camera cameraOf(const CameraDescription& camera, float aspect, const GeoOrigin& origin,
-                std::span<const Bounds3f> framingPieces);
+                std::span<const Bounds3f> framingPieces, const GroundHeight& groundAt = {});
 
 } // namespace urbis

@@ -30,6 +30,14 @@ void visitTerrainFields(Params& t, Visitor& v) {
         v.number("warp", t.fbm.warp, 0.0f, 1e5f);
         v.number("offset", t.fbm.offset, -1e4f, 1e4f);
     });
+    v.object("dual", [&] {
+        v.boolean("enabled", t.dual.enabled);
+        v.number("seed", t.dual.seed, 0u, UINT32_MAX);
+        v.number("wavelength", t.dual.wavelength, 1.0f, 1e6f);
+        v.number("amplitude", t.dual.amplitude, 0.0f, 1e4f);
+        v.number("offset", t.dual.offset, -1e4f, 1e4f);
+        v.number("mask_wavelength", t.dual.maskWavelength, 1.0f, 1e7f);
+    });
     v.object("materials", [&] {
         v.number("sand_level", t.sandLevel, -1e4f, 1e4f);
         v.number("snow_level", t.snowLevel, -1e4f, 1e9f);

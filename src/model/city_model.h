@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -195,6 +196,10 @@ struct Area {
     int layer = 0;
     Polygon polygon;
     LeafType leafType = LeafType::Unknown;   ///< `leaf_type` of a wood, forest or park (the trees filled in)
+    std::optional<float> ele;                ///< `ele` of a water body: its level, m above sea level
+    /// A river mapped only as a line (waterway=river|stream|canal|drain|ditch): its centerline (local
+    /// metres) in its OSM direction, the way it flows; `polygon` is the ribbon around it. Empty otherwise.
+    std::vector<Vec2d> flowLine;
 };
 
 /// A longitude/latitude box in degrees, WGS84.

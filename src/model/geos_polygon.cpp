@@ -46,6 +46,19 @@ Polygon fromGeos(Handle ctx, const GEOSGeometry* polygon) {
     return out;
 }
 
+/// The polygons of `geometry` (a polygon or a collection), oriented, without closing points; none empty.
+std::vector<Polygon> polygonsOf(Handle ctx, const GEOSGeometry* geometry) {
+    std::vector<Polygon> parts;
+    if (!geometry) return parts;
+    for (int i = 0, n = GEOSGetNumGeometries_r(ctx, geometry); i < n; ++i) {
+        const GEOSGeometry* part = GEOSGetGeometryN_r(ctx, geometry, i);
+        if (GEOSGeomTypeId_r(ctx, part) != GEOS_POLYGON || GEOSisEmpty_r(ctx, part) == 1) continue;
+        Polygon p = fromGeos(ctx, part);
+        if (p.outer.size() >= 3) parts.push_back(std::move(p));
+    }
+    return parts;
+}
+
 } // namespace
 
 GEOSGeometry* geosRing(GEOSContextHandle_t ctx, const Ring& ring) {
@@ -86,15 +99,22 @@ std::vector<Polygon> GeosContext::clipToRectangle(const Polygon& polygon, Vec2d 
     const Handle ctx = handle_;
     const GeometryPtr geometry = toGeos(ctx, polygon);
     const GeometryPtr clipped(GEOSClipByRect_r(ctx, geometry.get(), min.x, min.y, max.x, max.y), GeometryDeleter{ctx});
+    return polygonsOf(ctx, clipped.get());
+}
+
+std::vector<Polygon> GeosContext::ribbonAround(const std::vector<Vec2d>& line, double halfWidth) const {
+    const Handle ctx = handle_;
     std::vector<Polygon> parts;
-    if (!clipped) return parts;
-    for (int i = 0, n = GEOSGetNumGeometries_r(ctx, clipped.get()); i < n; ++i) {
-        const GEOSGeometry* part = GEOSGetGeometryN_r(ctx, clipped.get(), i);
-        if (GEOSGeomTypeId_r(ctx, part) != GEOS_POLYGON || GEOSisEmpty_r(ctx, part) == 1) continue;
-        Polygon p = fromGeos(ctx, part);
-        if (p.outer.size() >= 3) parts.push_back(std::move(p));
-    }
-    return parts;
+    if (line.size() < 2) return parts;
+    std::vector<double> xy;
+    for (const Vec2d p : line) xy.insert(xy.end(), {p.x, p.y});
+    GEOSCoordSequence* sequence = GEOSCoordSeq_copyFromBuffer_r(ctx, xy.data(), unsigned(line.size()), 0, 0);
+    if (!sequence) return parts;
+    const GeometryPtr path(GEOSGeom_createLineString_r(ctx, sequence), GeometryDeleter{ctx});
+    if (!path) return parts;
+    const GeometryPtr ribbon(GEOSBufferWithStyle_r(ctx, path.get(), halfWidth, 4, GEOSBUF_CAP_FLAT, GEOSBUF_JOIN_ROUND, 5.0),
+                             GeometryDeleter{ctx});
+    return polygonsOf(ctx, ribbon.get());
 }
 
 double GeosContext::overlapArea(const Polygon& a, const Polygon& b) const {

@@ -38,6 +38,11 @@ public:
     /// apart; oriented, without closing points.
     std::vector<Polygon> clipToRectangle(const Polygon& polygon, Vec2d min, Vec2d max) const;
 
+    /// The ribbon `halfWidth` metres to each side of `line` (local metres, two or more points), flat
+    /// at its ends, round at its bends (GEOSBufferWithStyle_r): one polygon, or several where the line
+    /// crosses itself; oriented, without closing points.
+    std::vector<Polygon> ribbonAround(const std::vector<Vec2d>& line, double halfWidth) const;
+
     /// Area in m^2 common to two valid polygons.
     double overlapArea(const Polygon& a, const Polygon& b) const;
 

@@ -138,6 +138,35 @@ public:
         for (const auto& [issue, n] : raw.tagIssues) record(city_.repaired, issue, id, n);
     }
 
+    /// A river mapped as a line: each piece clipped to the box, projected, and drawn as a water area,
+    /// the ribbon of its width around it (clipped to the box), its line kept as the area's flowLine.
+    /// Drops: "waterway_incomplete_geometry", "waterway_outside_bbox".
+    void addWaterway(const RawWaterway& raw) {
+        const OsmRef id{OsmType::Way, raw.osmId};
+        size_t kept = 0;
+        for (const GeoLine& piece : raw.pieces)
+            for (const GeoLine& clipped : clipPolyline(piece, box_)) {
+                std::vector<Vec2d> line;
+                for (const LonLat p : clipped) line.push_back(projection_.project(p));
+                const auto same = [](Vec2d a, Vec2d b) { return a.x == b.x && a.y == b.y; };
+                line.erase(std::unique(line.begin(), line.end(), same), line.end());
+                if (line.size() < 2) continue;
+                for (Polygon& ribbon : geos_.ribbonAround(line, 0.5 * raw.width))
+                    for (Polygon& part : geos_.clipToRectangle(ribbon, boxMin_, boxMax_)) {
+                        if (area(part) < kMinArea) continue;
+                        Area a;
+                        a.osmId = raw.osmId;
+                        a.kind = AreaKind::Water;
+                        a.polygon = std::move(part);
+                        a.flowLine = line;
+                        city_.areas.push_back(std::move(a));
+                        ++kept;
+                    }
+            }
+        if (kept == 0)
+            record(city_.dropped, raw.pieces.empty() ? "waterway_incomplete_geometry" : "waterway_outside_bbox", id);
+    }
+
     template <typename T>
     void addPoint(T item, LonLat p, std::vector<T>& out, const char* outsideReason) {
         if (!box_.contains(p)) {
@@ -220,6 +249,7 @@ CityModel buildCityModel(RawFeatures&& raw, const GeoBox& box) {
     for (RawBuilding& b : raw.buildings) builder.addBuilding(b);
     for (const RawArea& a : raw.areas) builder.addArea(a);
     builder.addCoastlines(raw.coastlines);
+    for (const RawWaterway& w : raw.waterways) builder.addWaterway(w);
     for (const RawRoad& r : raw.roads) builder.addLine(r, "road", city.roads);
     for (const RawRailway& r : raw.railways) builder.addLine(r, "railway", city.railways);
     for (const RawCrossing& c : crossingsOf(raw))

@@ -116,6 +116,12 @@ void FeatureCollector::way(const osmium::Way& way) {
         return;
     }
     PolygonRole role = roleOf(tags);
+    if (const std::optional<float> width = waterwayWidthFromTags(lookupIn(tags)); width && role == PolygonRole::None) {
+        RawWaterway river{way.id(), *width, {}};
+        piecesOf(way.nodes(), river.pieces);
+        out_.waterways.push_back(std::move(river));
+        return;
+    }
     // A highway tagged area=yes that is no ring (unclosed, or fewer than 4 nodes) is a
     // mistagged road: kept as one. (is_closed() reads the last node, so the size comes first.)
     if (role == PolygonRole::Area && tags.has_key("highway") && (way.nodes().size() < 4 || !way.is_closed()))
@@ -200,6 +206,8 @@ void FeatureCollector::addPolygonFeature(PolygonRole role, const osmium::TagList
         if (const char* surface = lookup("surface")) a.attributes.surface = parseRoadSurface(surface);
         a.attributes.layer = levelFromTags(lookup, "area_bad_layer_tag", a.tagIssues).layer;
         a.attributes.leafType = leafTypeFromTags(lookup);
+        if (const char* ele = lookup("ele"); ele && a.attributes.kind == AreaKind::Water)
+            if (const std::optional<double> metres = parseElevation(ele)) a.attributes.ele = float(*metres);
         out_.areas.push_back(std::move(a));
         return;
     }

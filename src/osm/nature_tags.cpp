@@ -77,6 +77,21 @@ LeafType leafTypeFromTags(const TagLookup& tag) {
     return LeafType::Unknown;
 }
 
+std::optional<float> waterwayWidthFromTags(const TagLookup& tag) {
+    static constexpr std::array<std::pair<std::string_view, float>, 5> kWidths = {
+        {{"river", 12.0f}, {"canal", 8.0f}, {"stream", 3.0f}, {"drain", 1.5f}, {"ditch", 1.5f}}};
+    const char* waterway = tag("waterway");
+    if (!waterway) return std::nullopt;
+    if (const char* tunnel = tag("tunnel"); tunnel && std::string_view(tunnel) != "no") return std::nullopt;
+    for (const auto& [kind, width] : kWidths) {
+        if (kind != waterway) continue;
+        const char* tagged = tag("width");
+        const std::optional<double> metres = tagged ? parseLength(tagged) : std::nullopt;
+        return metres && *metres > 0.1 ? float(*metres) : width;
+    }
+    return std::nullopt;
+}
+
 std::optional<AreaKind> areaKindFromTags(const TagLookup& tag) {
     if (tag("highway") && !isHighwayArea(tag)) return std::nullopt;
     for (const AreaRule& rule : kAreaRules) {

@@ -17,6 +17,11 @@ Tree treeFromTags(const TagLookup& tag, int64_t osmId);
 /// `leaf_type`: broadleaved, needleleaved (mixed, leafless and anything else: Unknown).
 LeafType leafTypeFromTags(const TagLookup& tag);
 
+/// The width (m) of the water ribbon drawn for a river mapped as a line: `width` where it parses, else
+/// by `waterway`: river 12, canal 8, stream 3, drain and ditch 1.5; nullopt for any other waterway and
+/// for one in a tunnel (tunnel=culvert|yes|...: under the ground, not drawn).
+std::optional<float> waterwayWidthFromTags(const TagLookup& tag);
+
 /// The kind of ground a closed way or multipolygon covers; nullopt for none. Tags are tried in
 /// this order, and the first that names a kind wins (docs/streets.md, "Street tags"):
 ///  1. water: natural=water|wetland, waterway=riverbank, water=*, landuse=basin|reservoir: a

@@ -70,6 +70,13 @@ struct RawCoastline {
     std::vector<GeoLine> pieces;
 };
 
+/// A river mapped as a line (waterwayWidthFromTags): its pieces in its OSM direction, and its width.
+struct RawWaterway {
+    int64_t osmId = 0;
+    float width = 0;   ///< m
+    std::vector<GeoLine> pieces;
+};
+
 /// A crossing at a node, still in degrees.
 struct RawCrossing {
     Crossing attributes;  ///< osmId: the node's id
@@ -83,6 +90,7 @@ struct RawFeatures {
     std::vector<RawRailway> railways;
     std::vector<RawCrossing> crossings;        ///< crossing nodes (highway/railway/footway=crossing)
     std::vector<RawCoastline> coastlines;      ///< natural=coastline ways (osm/coastline.h)
+    std::vector<RawWaterway> waterways;        ///< rivers mapped as lines
     /// Nodes of footway=crossing ways, each with the way's kind: a crossing where a carriageway
     /// shares the node (and no crossing node stands there already).
     std::vector<RawCrossing> crossingWayNodes;

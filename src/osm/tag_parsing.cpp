@@ -75,6 +75,17 @@ std::optional<double> parseLength(std::string_view value) {
     return metres;
 }
 
+std::optional<double> parseElevation(std::string_view value) {
+    std::string_view s = trim(value);
+    const std::optional<double> number = takeNumber(s);
+    if (!number) return std::nullopt;
+    double metres = *number;
+    if (oneOf(s, {"ft", "feet"})) metres *= kFoot;
+    else if (!oneOf(s, {"", "m"})) return std::nullopt;
+    if (!(metres >= -500.0 && metres <= 9000.0)) return std::nullopt;
+    return metres;
+}
+
 std::optional<double> parseLevels(std::string_view value) {
     std::string_view s = trim(value);
     const std::optional<double> number = takeNumber(s);

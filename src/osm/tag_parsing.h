@@ -20,6 +20,10 @@ bool oneOf(std::string_view s, std::initializer_list<std::string_view> names);
 /// "40'6\"". Negative, NaN, infinite, absurd (> 1000 m) or unparsable values give nullopt.
 std::optional<double> parseLength(std::string_view value);
 
+/// A height above sea level in metres (`ele`) from "12", "12.5 m", "-28", "1200 ft": nullopt for
+/// anything unparsable or beyond [-500, 9000] m (no water lies lower or higher on Earth).
+std::optional<double> parseElevation(std::string_view value);
+
 /// A storey count ("3", "2.5"), in [0, 300]; anything else gives nullopt.
 std::optional<double> parseLevels(std::string_view value);
 

@@ -54,6 +54,7 @@ void meshBridges(const std::vector<Road>& roads, const std::vector<std::vector<f
     size_t triangles = 0;
     uint64_t bridges = 0;
     size_t next = 0;  // the next of bridgeRoads
+    std::vector<BridgeWay> spanWays;
     for (size_t i = 0; i < roads.size(); ++i) {
         const Road& r = roads[i];
         const std::vector<float>& e = elevations[i];
@@ -70,6 +71,7 @@ void meshBridges(const std::vector<Road>& roads, const std::vector<std::vector<f
             shape.closeStart = e.front() > 0 && bridgeEnds[keyOf(r.centerline.front())] == 1;
             shape.closeEnd = e.back() > 0 && bridgeEnds[keyOf(r.centerline.back())] == 1;
             triangles += meshDeck(r.centerline, e, shape, deck, parapet, out.mesh);
+            spanWays.push_back({&r.centerline, &e, std::max(shape.leftWidth, shape.rightWidth) + kParapetThickness});
             const PierDeck pierDeck{chainStart[next], shape.leftWidth, shape.rightWidth,
                                     kRoadLevel - kDeckThickness, r.layer};
             triangles += meshPiers(r.centerline, e, pierDeck, obstacles,
@@ -81,6 +83,7 @@ void meshBridges(const std::vector<Road>& roads, const std::vector<std::vector<f
         if (!atSurface(r) || !meshableLine(r.centerline) || e.size() != r.centerline.size()) continue;
         triangles += meshEmbankments(r.centerline, e, shape, deck, parapet, out.mesh);
     }
+    for (BridgeSpan& span : bridgeSpans(spanWays)) out.bridgeSpans.push_back(std::move(span));
     out.objects = std::max(out.objects, uint32_t(roads.size()));
     out.counts["bridges"] += bridges;
     out.trianglesByKind["bridges"] += triangles;

@@ -108,9 +108,13 @@ void meshGroundCover(const CityModel& city, const StreetOptions& options, Street
     if (shapes.holesSkipped) out.dropped["area_hole_degenerate"] += shapes.holesSkipped;
 
     std::vector<size_t> water;
+    std::vector<bool> ribbon;
     for (const CoverItem& item : items)
-        if (item.style.band == Band::Water) water.push_back(item.shape);
-    const std::vector<bool> waterLeft = separateWaters(shapes, water);
+        if (item.style.band == Band::Water) {
+            water.push_back(item.shape);
+            ribbon.push_back(!city.areas[item.area].flowLine.empty());
+        }
+    const std::vector<bool> waterLeft = separateWaters(shapes, water, ribbon);
     for (size_t i = 0, w = 0; i < items.size(); ++i)
         if (items[i].style.band == Band::Water && !waterLeft[w++]) {
             items[i].kept = false;
@@ -149,6 +153,12 @@ void meshGroundCover(const CityModel& city, const StreetOptions& options, Street
             const TriangleInfo bed = infoOf(StreetMaterial::WaterBed, SurfacePart::Water);
             waterTriangles += addFlat(triangles, waterSurfaceLevel(), info, out.mesh);
             waterTriangles += meshWaterBed(shapes, item.shape, options.water, bed, out.mesh);
+            const Area& area = city.areas[item.area];
+            if (area.ele) out.waterElevations[object] = *area.ele;
+            if (!area.flowLine.empty()) {
+                std::vector<Vec2d>& flow = out.waterFlows[object];
+                for (const Vec2d p : area.flowLine) flow.push_back({p.x, -p.y});   // world x, z
+            }
             ++waterAreas;
         } else {
             groundTriangles += addFlat(triangles, item.level, info, out.mesh);

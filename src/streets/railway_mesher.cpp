@@ -71,6 +71,7 @@ void meshRailways(const CityModel& city, const StreetOptions& options, StreetMes
     const uint32_t firstObject = options.firstObject + out.objects;  // after the parts meshed before
     size_t triangles = 0;
     uint64_t meshed = 0;
+    std::vector<BridgeWay> spanWays;
     for (size_t i = 0; i < railways.size(); ++i) {
         const Railway& r = railways[i];
         if (!atSurface(r)) {
@@ -106,6 +107,7 @@ void meshRailways(const CityModel& city, const StreetOptions& options, StreetMes
             shape.closeStart = e.front() > 0 && ends[keyOf(r.centerline.front())] == 1;
             shape.closeEnd = e.back() > 0 && ends[keyOf(r.centerline.back())] == 1;
             triangles += meshDeck(r.centerline, e, shape, concrete, parapet, out.mesh);
+            spanWays.push_back({&r.centerline, &e, shape.leftWidth + kParapetThickness});
             const PierDeck deck{chainStart[bridgeOf[i]], shape.leftWidth, shape.rightWidth, kRoadLevel - kDeckThickness, r.layer};
             triangles += meshPiers(r.centerline, e, deck, obstacles,
                                    {concrete.material, object, uint32_t(SurfacePart::Pier)}, out.mesh);
@@ -114,6 +116,7 @@ void meshRailways(const CityModel& city, const StreetOptions& options, StreetMes
         }
         ++meshed;
     }
+    for (BridgeSpan& span : bridgeSpans(spanWays)) out.bridgeSpans.push_back(std::move(span));
     out.objects += uint32_t(railways.size());
     out.counts["railways"] += meshed;
     out.trianglesByKind["railways"] += triangles;

@@ -8,6 +8,7 @@
 #include "scene/lamp_record.h"
 #include "scene/road_segment.h"
 #include "scene/triangle_mesh.h"
+#include "streets/bridge_spans.h"
 #include "streets/water_options.h"
 
 #include <cstdint>
@@ -30,6 +31,9 @@ struct StreetMesh {
     TriangleMesh mesh;                          ///< every stored street triangle
     std::vector<RoadSegment> roadSegments;      ///< a Road triangle's TriangleInfo::object indexes these
     std::vector<LampRecord> lamps;              ///< analytic street lamps (StreetOptions::lamps == Procedural)
+    std::vector<BridgeSpan> bridgeSpans;        ///< road and railway bridges' decks, for a terrain
+    std::map<uint32_t, float> waterElevations;  ///< OSM `ele` (Area::ele) of water bodies, by object id
+    std::map<uint32_t, std::vector<Vec2d>> waterFlows;  ///< rivers drawn from lines: Area::flowLine in world (x, z), by object id
     /// What was made, keyed roads, junctions, sidewalks, crossings, ground_cover, water, bridges,
     /// railways, lamps (for --stats `counts`).
     std::map<std::string, uint64_t> counts;

@@ -3,6 +3,7 @@
 #include "base/input_error.h"
 #include "osm/geo_projection.h"
 #include "terrain/dem_raster.h"
+#include "terrain/dual_heightmap.h"
 
 #include <tbb/parallel_for.h>
 
@@ -56,6 +57,7 @@ void checkParams(const TerrainParams& p) {
     require(p.cell >= 0 && p.cell <= 1000, "cell must be in [0, 1000] metres");
     require(p.fbm.octaves >= 1 && p.fbm.octaves <= 24, "octaves must be in [1, 24]");
     require(p.fbm.wavelength > 0, "wavelength must be positive");
+    require(p.dual.wavelength > 0 && p.dual.maskWavelength > 0, "dual.wavelength and dual.mask_wavelength must be positive");
     require(p.fade >= 0, "fade must not be negative");
 }
 
@@ -118,7 +120,7 @@ TerrainField buildTerrain(const TerrainParams& params, const GeoOrigin& origin, 
             // Distance (metres) inside the fade border: the fBm square's, or the DEM's rectangle's.
             float inside = INFINITY;
             if (fbm) {
-                h += fbmTerrainHeight(params.fbm, {x, z});
+                h += landscapeHeight(params, {x, z});
                 inside = std::min({x - xa, xb - x, z - za, zb - z});
             }
             if (dem) {

@@ -9,12 +9,26 @@
 
 namespace urbis {
 
+/// The Cambridge work's dual heightmap: a second fBm landscape (its own seed, wavelength, amplitude
+/// and offset; the first's octaves, lacunarity, gain, erosion and warp) blended with the first by a
+/// mask of low-frequency value noise, so that two kinds of land (hills and plains, say) alternate
+/// across the terrain (terrain/dual_heightmap.h).
+struct DualHeightmap {
+    bool enabled = false;
+    uint32_t seed = 23;
+    float wavelength = 400.0f;        ///< metres, of the second fBm's first octave
+    float amplitude = 60.0f;          ///< metres, of its first octave
+    float offset = 40.0f;             ///< metres added to its heights
+    float maskWavelength = 4000.0f;   ///< metres, of the mask's noise: the size of each kind's regions
+};
+
 struct TerrainParams {
     std::string kind = "none";         ///< "none" or "fbm": the procedural landscape (plus the DEM, if any)
     std::string dem;                   ///< a raster GDAL opens (GeoTIFF, .vrt, ...): real elevation, metres
     std::string march = "hierarchy";   ///< one of kTerrainMarches
     std::string interpolation = "bicubic";  ///< of the DEM between its pixels: "bilinear" or "bicubic"
     FbmParams fbm;                     ///< the landscape's fBm (kind "fbm")
+    DualHeightmap dual;                ///< a second fBm blended with it (kind "fbm")
     float size = 8000.0f;              ///< metres a side of the fBm landscape's grid, around the city
     float cell = 0.0f;                 ///< metres between the marched samples; 0: 4 for fBm, 2 with a DEM
     float detail = 1.5f;               ///< metres: amplitude of the fBm added below a DEM's resolution
