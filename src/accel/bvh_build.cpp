@@ -19,9 +19,8 @@ constexpr uint32_t kMedianSplitDepth = 32;
 constexpr uint32_t kParallelBinningThreshold = 1u << 16;
 
 /// A node of the intermediate binary tree, collapsed into 4-wide nodes at the end.
-/// Interior: primCount == 0 and `first` is the right child (in slots: its slot; after
-/// compact(): the left child, the right one follows). Leaf: primitives [first, first +
-/// primCount) of primOrder.
+/// Interior: primCount == 0, its left child in the next slot and `first` the right child's slot.
+/// Leaf: primitives [first, first + primCount) of primOrder.
 struct BinaryNode {
     Bounds3f box;
     uint32_t first = 0;
@@ -117,29 +116,11 @@ public:
         build(0, 0, n, reduceBounds(0, n, false), 0);
     }
 
-    /// Lays the slots out depth first with siblings adjacent.
-    std::vector<BinaryNode> compact() const {
-        std::vector<BinaryNode> nodes;
-        nodes.reserve(slots_.size());
-        nodes.push_back(slots_[0]);
-        struct Pending {
-            uint32_t node, slot;
-        };
-        std::vector<Pending> stack{{0, 0}};
-        while (!stack.empty()) {
-            const Pending p = stack.back();
-            stack.pop_back();
-            const BinaryNode& s = slots_[p.slot];
-            if (s.isLeaf()) continue;
-            const uint32_t leftSlot = p.slot + 1, rightSlot = s.first;
-            const uint32_t k = static_cast<uint32_t>(nodes.size());
-            nodes.push_back(slots_[leftSlot]);
-            nodes.push_back(slots_[rightSlot]);
-            nodes[p.node].first = k;
-            stack.push_back({k + 1, rightSlot});
-            stack.push_back({k, leftSlot});
-        }
-        return nodes;
+    /// The binary tree in its slots (an interior node's left child is the next slot), once built;
+    /// the centroids, no longer needed, are released first.
+    const std::vector<BinaryNode>& slots() {
+        std::vector<Vec3f>().swap(centroids_);
+        return slots_;
     }
 
 private:
@@ -339,12 +320,59 @@ BvhNode emptyWideNode() {
     return node;
 }
 
-/// Collapses the binary tree into 4-wide nodes: each wide node takes the children of a
-/// binary node and keeps opening its largest interior child until it has kBvhWidth
-/// (as in Embree's BVH4 builders). Depth first, so siblings' subtrees stay close in memory.
-/// The root takes at most `rootLanes` children (lanes left free for attachLeafAtRoot).
+/// The binary nodes that become the lanes of the wide node made from binary node `node`: its
+/// children, then its largest interior lane opened until there are `maxLanes` (as in Embree's BVH4
+/// builders); a root that is a leaf is its own lane. Returns how many.
+int wideLanes(const std::vector<BinaryNode>& binary, uint32_t node, int maxLanes, uint32_t (&lanes)[kBvhWidth]) {
+    int count = 0;
+    const BinaryNode& top = binary[node];
+    if (top.isLeaf()) {
+        lanes[count++] = node;
+    } else {
+        lanes[count++] = node + 1;
+        lanes[count++] = top.first;
+    }
+    while (count < maxLanes) {
+        int open = -1;
+        for (int l = 0; l < count; ++l) {
+            const BinaryNode& n = binary[lanes[l]];
+            if (!n.isLeaf() && (open < 0 || n.box.area() > binary[lanes[open]].box.area())) open = l;
+        }
+        if (open < 0) break;
+        const uint32_t opened = lanes[open];
+        for (int l = count; l > open + 1; --l) lanes[l] = lanes[l - 1];
+        lanes[open] = opened + 1;
+        lanes[open + 1] = binary[opened].first;
+        ++count;
+    }
+    return count;
+}
+
+/// How many wide nodes collapse makes: counted first, so that their array is allocated once at its
+/// size rather than grown (which held up to three times its size at once).
+size_t wideNodeCount(const std::vector<BinaryNode>& binary, int rootLanes) {
+    size_t count = 0;
+    std::vector<uint32_t> stack{0};
+    while (!stack.empty()) {
+        const uint32_t node = stack.back();
+        stack.pop_back();
+        ++count;
+        uint32_t lanes[kBvhWidth];
+        const int laneCount = wideLanes(binary, node, count == 1 ? rootLanes : kBvhWidth, lanes);
+        for (int l = 0; l < laneCount; ++l)
+            if (!binary[lanes[l]].isLeaf()) stack.push_back(lanes[l]);
+    }
+    return count;
+}
+
+/// Collapses the binary tree into 4-wide nodes (wideLanes). Depth first, so siblings' subtrees stay
+/// close in memory. The root takes at most `rootLanes` children (lanes left free for
+/// attachLeafAtRoot). `binary` is the builder's slots as they are: the wide layout depends on the
+/// tree alone, so no compacted copy of it (64 bytes a primitive) is made.
 std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLanes) {
-    std::vector<BvhNode> wide{emptyWideNode()};
+    std::vector<BvhNode> wide;
+    wide.reserve(wideNodeCount(binary, rootLanes));
+    wide.push_back(emptyWideNode());
     struct Pending {
         uint32_t wide, binary;
     };
@@ -353,27 +381,7 @@ std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLan
         const Pending p = stack.back();
         stack.pop_back();
         uint32_t lanes[kBvhWidth];
-        int count = 0;
-        const BinaryNode& top = binary[p.binary];
-        if (top.isLeaf()) {
-            lanes[count++] = p.binary;   // a root that is a leaf
-        } else {
-            lanes[count++] = top.first;
-            lanes[count++] = top.first + 1;
-        }
-        while (count < (p.wide == 0 ? rootLanes : kBvhWidth)) {
-            int open = -1;
-            for (int l = 0; l < count; ++l) {
-                const BinaryNode& n = binary[lanes[l]];
-                if (!n.isLeaf() && (open < 0 || n.box.area() > binary[lanes[open]].box.area())) open = l;
-            }
-            if (open < 0) break;
-            const uint32_t left = binary[lanes[open]].first;
-            for (int l = count; l > open + 1; --l) lanes[l] = lanes[l - 1];
-            lanes[open] = left;
-            lanes[open + 1] = left + 1;
-            ++count;
-        }
+        const int count = wideLanes(binary, p.binary, p.wide == 0 ? rootLanes : kBvhWidth, lanes);
         Pending children[kBvhWidth];
         int childCount = 0;
         for (int l = 0; l < count; ++l) {
@@ -389,7 +397,7 @@ std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLan
             } else {
                 w.child[l] = static_cast<uint32_t>(wide.size());
                 children[childCount++] = {w.child[l], lanes[l]};
-                wide.push_back(emptyWideNode());   // invalidates w
+                wide.push_back(emptyWideNode());   // within the reserved size: w stays valid
             }
         }
         for (int c = childCount - 1; c >= 0; --c) stack.push_back(children[c]);
@@ -416,7 +424,7 @@ Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& opt
     }
     Builder builder(primBounds, primCosts, options, bvh);
     builder.run();
-    bvh.nodes = collapse(builder.compact(), std::max(2, kBvhWidth - int(options.freeRootLanes)));
+    bvh.nodes = collapse(builder.slots(), std::max(2, kBvhWidth - int(options.freeRootLanes)));
     if (!primCosts.empty()) markCostlyLeaves(primCosts, bvh);
     return bvh;
 }
