@@ -31,17 +31,20 @@ namespace {
 /// reflector (a pure black roof renders as a hole in the city).
 constexpr float kMinAlbedo = 0.03f, kMaxAlbedo = 0.85f;
 
-/// Colours are kept to steps of 1/1024 (under a fifth of an 8-bit sRGB step from 0.01 up: invisible), so
-/// that buildings whose colours are a palette's with a jitter share materials rather than take one
-/// each (72 bytes a building on the device, some 900 MB for 10 million).
+/// Buildings' colours are kept to steps of 1/1024 (under a fifth of an 8-bit sRGB step from 0.01 up:
+/// invisible), so that buildings whose colours are a palette's with a jitter share materials rather
+/// than take one each (72 bytes a building on the device, some 900 MB for 10 million).
 constexpr float kColourSteps = 1024.0f;
+
+Rgb inColourSteps(Rgb c) {
+    const auto step = [](float v) { return std::round(v * kColourSteps) / kColourSteps; };
+    return {step(c.r), step(c.g), step(c.b)};
+}
 
 /// One material per distinct colour, so a million buildings share a small table.
 class MaterialTable {
 public:
-    uint32_t indexOf(Rgb colour) {
-        const auto step = [](float v) { return std::round(v * kColourSteps) / kColourSteps; };
-        const Rgb c{step(colour.r), step(colour.g), step(colour.b)};
+    uint32_t indexOf(Rgb c) {
         auto key = std::make_tuple(c.r, c.g, c.b);
         auto [it, inserted] = index_.try_emplace(key, uint32_t(materials.size()));
         const auto clamp = [](float v) { return std::clamp(v, kMinAlbedo, kMaxAlbedo); };
@@ -190,8 +193,8 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     std::vector<TriangleInfo> wallInfo(city.buildings.size()), roofInfo(city.buildings.size());
     for (size_t i = 0; i < city.buildings.size(); ++i) {
         const Building& b = city.buildings[i];
-        wallInfo[i] = {table.indexOf(b.wallColour), uint32_t(i + 1), uint32_t(SurfacePart::Facade)};
-        roofInfo[i] = {table.indexOf(b.roofColour), uint32_t(i + 1), uint32_t(SurfacePart::Roof)};
+        wallInfo[i] = {table.indexOf(inColourSteps(b.wallColour)), uint32_t(i + 1), uint32_t(SurfacePart::Facade)};
+        roofInfo[i] = {table.indexOf(inColourSteps(b.roofColour)), uint32_t(i + 1), uint32_t(SurfacePart::Roof)};
     }
     out.materials = std::move(table.materials);
     const uint32_t facadeMaterials = uint32_t(out.materials.size());
