@@ -51,9 +51,10 @@ TEST(CityScene, SameSceneForAnyThreadCount) {
 
 TEST(CityScene, JitteredColoursShareMaterials) {
     // Each building's colour is a palette's times its own jitter: kept to 1/1024 steps, the buildings
-    // share materials rather than take one (or two, with a pitched roof) each.
+    // share materials (some 2,100 here, at most some 5,000 however many buildings) rather than take one,
+    // or two with a pitched roof, each (about 3,900 here).
     LayoutParams params;
     params.buildings = 3000;
     const CityMesh mesh = meshCity(generateCity(params));
-    EXPECT_LT(mesh.materials.size(), params.buildings / 2);
+    EXPECT_LT(mesh.materials.size(), params.buildings);
 }
