@@ -9,8 +9,8 @@
 
 namespace urbis {
 
-/// A node of the binary tree. Interior: primCount == 0 and `first` is its left child (the right
-/// one follows). Leaf: primitives [first, first + primCount) of BinaryBvh::primOrder.
+/// A node of the binary tree. Interior: primCount == 0, its left child the next node and `first` its
+/// right child. Leaf: primitives [first, first + primCount) of BinaryBvh::primOrder.
 struct BinaryNode {
     Bounds3f box;
     uint32_t first = 0;
@@ -18,7 +18,8 @@ struct BinaryNode {
     bool isLeaf() const { return primCount != 0; }
 };
 
-/// A binary BVH laid out depth first with siblings adjacent; nodes[0] is the root.
+/// A binary BVH laid out depth first (the builder's slots: each subtree's nodes together, the left
+/// child after its parent); nodes[0] is the root.
 struct BinaryBvh {
     std::vector<BinaryNode> nodes;
     std::vector<uint32_t> primOrder;

@@ -108,29 +108,11 @@ public:
         build(0, 0, n, reduceBounds(0, n, false), 0);
     }
 
-    /// Lays the slots out depth first with siblings adjacent.
-    std::vector<BinaryNode> compact() const {
-        std::vector<BinaryNode> nodes;
-        nodes.reserve(slots_.size());
-        nodes.push_back(slots_[0]);
-        struct Pending {
-            uint32_t node, slot;
-        };
-        std::vector<Pending> stack{{0, 0}};
-        while (!stack.empty()) {
-            const Pending p = stack.back();
-            stack.pop_back();
-            const BinaryNode& s = slots_[p.slot];
-            if (s.isLeaf()) continue;
-            const uint32_t leftSlot = p.slot + 1, rightSlot = s.first;
-            const uint32_t k = static_cast<uint32_t>(nodes.size());
-            nodes.push_back(slots_[leftSlot]);
-            nodes.push_back(slots_[rightSlot]);
-            nodes[p.node].first = k;
-            stack.push_back({k + 1, rightSlot});
-            stack.push_back({k, leftSlot});
-        }
-        return nodes;
+    /// The binary tree in its slots (an interior node's left child is the next slot), once built,
+    /// moved out as it is: no compacted copy (64 bytes a primitive). The centroids are released first.
+    std::vector<BinaryNode> takeSlots() {
+        std::vector<Vec3f>().swap(centroids_);
+        return std::move(slots_);
     }
 
 private:
@@ -334,7 +316,15 @@ BvhNode emptyWideNode() {
 /// subtrees stay close in memory.
 /// The root takes at most `rootLanes` children (lanes left free for attachLeafAtRoot).
 std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLanes) {
-    std::vector<BvhNode> wide{emptyWideNode()};
+    // Counted first, so that the array is allocated once at its size (growing held up to three times it).
+    size_t count = 0;
+    collapseDepthFirst<kBvhWidth>(binary, rootLanes, [&](uint32_t, const uint32_t* lanes, int laneCount, uint32_t* children) {
+        for (int l = 0; l < laneCount; ++l)
+            if (!binary[lanes[l]].isLeaf()) children[l] = uint32_t(++count);
+    });
+    std::vector<BvhNode> wide;
+    wide.reserve(count + 1);
+    wide.push_back(emptyWideNode());
     collapseDepthFirst<kBvhWidth>(binary, rootLanes, [&](uint32_t at, const uint32_t* lanes, int count, uint32_t* children) {
         for (int l = 0; l < count; ++l) {
             const BinaryNode& n = binary[lanes[l]];
@@ -370,8 +360,8 @@ int gatherLanes(const std::vector<BinaryNode>& binary, uint32_t top, uint32_t* l
         return 1;
     }
     int count = 0;
+    lanes[count++] = top + 1;
     lanes[count++] = binary[top].first;
-    lanes[count++] = binary[top].first + 1;
     while (count < maxLanes) {
         int open = -1;
         for (int l = 0; l < count; ++l) {
@@ -379,10 +369,10 @@ int gatherLanes(const std::vector<BinaryNode>& binary, uint32_t top, uint32_t* l
             if (!n.isLeaf() && (open < 0 || n.box.area() > binary[lanes[open]].box.area())) open = l;
         }
         if (open < 0) break;
-        const uint32_t left = binary[lanes[open]].first;
+        const uint32_t opened = lanes[open];
         for (int l = count; l > open + 1; --l) lanes[l] = lanes[l - 1];
-        lanes[open] = left;
-        lanes[open + 1] = left + 1;
+        lanes[open] = opened + 1;
+        lanes[open + 1] = binary[opened].first;
         ++count;
     }
     return count;
@@ -393,7 +383,7 @@ BinaryBvh buildBinaryBvh(const std::vector<Bounds3f>& primBounds, const BvhBuild
     BinaryBvh binary;
     Builder builder(primBounds, primCosts, options, binary.primOrder);
     builder.run();
-    binary.nodes = builder.compact();
+    binary.nodes = builder.takeSlots();
     return binary;
 }
 

@@ -12,9 +12,13 @@
 #include "streets/street_mesher.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <cstdio>
 #include <exception>
 #include <tuple>
@@ -27,6 +31,16 @@ namespace {
 /// and dark slate about 3 %. A mapped "black" or "white" is such a surface, not a perfect absorber or
 /// reflector (a pure black roof renders as a hole in the city).
 constexpr float kMinAlbedo = 0.03f, kMaxAlbedo = 0.85f;
+
+/// Buildings' colours are kept to steps of 1/1024 (under a fifth of an 8-bit sRGB step from 0.01 up:
+/// invisible), so that buildings whose colours are a palette's with a jitter share materials rather
+/// than take one each (72 bytes a building on the device, some 900 MB for 10 million).
+constexpr float kColourSteps = 1024.0f;
+
+Rgb inColourSteps(Rgb c) {
+    const auto step = [](float v) { return std::round(v * kColourSteps) / kColourSteps; };
+    return {step(c.r), step(c.g), step(c.b)};
+}
 
 /// One material per distinct colour, so a million buildings share a small table.
 class MaterialTable {
@@ -87,6 +101,9 @@ void meshBuildingInto(GEOSContextHandle_t geos, const Building& building, Triang
 }
 
 constexpr size_t kChunk = 256;
+/// Chunks meshed or waiting to be appended at once, per thread: enough that no thread waits on the
+/// one being appended.
+constexpr size_t kChunksInFlightPerThread = 4;
 
 /// Calls f(p) for every vertex of the city's triangles and two opposite corners of each wall (a wall is
 /// an upright rectangle: those two bound it).
@@ -179,14 +196,10 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
     const Vec3f ground = options.materials.groundAlbedo;
     uint32_t groundMaterial = table.indexOf(Rgb{ground.x, ground.y, ground.z});
     std::vector<TriangleInfo> wallInfo(city.buildings.size()), roofInfo(city.buildings.size());
-    std::vector<WallContext> facades(city.buildings.size());
     for (size_t i = 0; i < city.buildings.size(); ++i) {
         const Building& b = city.buildings[i];
-        wallInfo[i] = {table.indexOf(b.wallColour), uint32_t(i + 1), uint32_t(SurfacePart::Facade)};
-        roofInfo[i] = {table.indexOf(b.roofColour), uint32_t(i + 1), uint32_t(SurfacePart::Roof)};
-        facades[i] = {&b, facadeStyleOf(b), uint32_t(i + 1), wallInfo[i].material, 0};
-        facades[i].litChance = chanceByte(litRoomShare(windowUseOf(b.type), options.hour));
-        facades[i].shopLitChance = chanceByte(litShopWindowShare(options.hour));
+        wallInfo[i] = {table.indexOf(inColourSteps(b.wallColour)), uint32_t(i + 1), uint32_t(SurfacePart::Facade)};
+        roofInfo[i] = {table.indexOf(inColourSteps(b.roofColour)), uint32_t(i + 1), uint32_t(SurfacePart::Roof)};
     }
     out.materials = std::move(table.materials);
     const uint32_t facadeMaterials = uint32_t(out.materials.size());
@@ -197,32 +210,49 @@ CityMesh meshCity(const CityModel& city, const CityMeshOptions& options) {
         for (const Material& m : litRoomPaletteMaterials(out.materials[facadeMaterials + uint32_t(FacadeMaterial::RoomLit)]))
             out.materials.push_back(m);
     }
-    for (WallContext& f : facades) {
-        f.facadeMaterials = facadeMaterials;
+    const auto facadeOf = [&](size_t i) {
+        const Building& b = city.buildings[i];
+        WallContext f{&b, facadeStyleOf(b), uint32_t(i + 1), wallInfo[i].material, facadeMaterials};
         f.proceduralParapets = options.geometry.roofs == Representation::Procedural;
-    }
+        f.litChance = chanceByte(litRoomShare(windowUseOf(b.type), options.hour));
+        f.shopLitChance = chanceByte(litShopWindowShare(options.hour));
+        return f;
+    };
 
-    std::vector<Chunk> chunks((city.buildings.size() + kChunk - 1) / kChunk);
-    tbb::parallel_for(size_t(0), chunks.size(), [&](size_t c) {
+    // Streamed: chunks of buildings are meshed in parallel and appended in their order as they come,
+    // each released once appended, so that only some chunks per thread are alive at once rather than
+    // a second copy of the whole city's mesh; the order keeps the city the same for any thread count.
+    const size_t chunkCount = (city.buildings.size() + kChunk - 1) / kChunk;
+    size_t nextChunk = 0, walls = 0, roofs = 0;
+    const auto nextIndex = [&](tbb::flow_control& control) {
+        if (nextChunk == chunkCount) control.stop();
+        return nextChunk++;
+    };
+    const auto meshChunk = [&](size_t c) {
+        auto chunk = std::make_shared<Chunk>();
         GEOSContextHandle_t geos = GEOS_init_r();
-        Chunk& chunk = chunks[c];
-        size_t end = std::min(city.buildings.size(), (c + 1) * kChunk);
-        for (size_t i = c * kChunk; i < end; ++i)
+        const size_t end = std::min(city.buildings.size(), (c + 1) * kChunk);
+        for (size_t i = c * kChunk; i < end; ++i) {
+            const WallContext facade = facadeOf(i);
             meshBuildingInto(geos, city.buildings[i], wallInfo[i], roofInfo[i],
-                             options.geometry.walls != Representation::Plain ? &facades[i] : nullptr, chunk);
+                             options.geometry.walls != Representation::Plain ? &facade : nullptr, *chunk);
+        }
         GEOS_finish_r(geos);
-    });
-
-    size_t walls = 0, roofs = 0;
-    for (const Chunk& chunk : chunks) {
-        out.mesh.append(chunk.mesh);
-        out.walls.insert(out.walls.end(), chunk.walls.begin(), chunk.walls.end());
-        walls += chunk.counts.walls;
-        roofs += chunk.counts.roofs;
-        out.holesDropped += chunk.counts.holesDropped;
-        for (const auto& [reason, n] : chunk.counts.roofFallbacks) out.roofFallbacks[reason] += n;
-        for (const auto& [reason, n] : chunk.dropped) out.dropped[reason] += n;
-    }
+        return chunk;
+    };
+    const auto appendChunk = [&](const std::shared_ptr<Chunk>& chunk) {
+        out.mesh.append(chunk->mesh);
+        out.walls.insert(out.walls.end(), chunk->walls.begin(), chunk->walls.end());
+        walls += chunk->counts.walls;
+        roofs += chunk->counts.roofs;
+        out.holesDropped += chunk->counts.holesDropped;
+        for (const auto& [reason, n] : chunk->counts.roofFallbacks) out.roofFallbacks[reason] += n;
+        for (const auto& [reason, n] : chunk->dropped) out.dropped[reason] += n;
+    };
+    tbb::parallel_pipeline(kChunksInFlightPerThread * size_t(tbb::this_task_arena::max_concurrency()),
+                           tbb::make_filter<void, size_t>(tbb::filter_mode::serial_in_order, nextIndex) &
+                               tbb::make_filter<size_t, std::shared_ptr<Chunk>>(tbb::filter_mode::parallel, meshChunk) &
+                               tbb::make_filter<std::shared_ptr<Chunk>, void>(tbb::filter_mode::serial_in_order, appendChunk));
     forEachCityPoint(out, [&out](Vec3f p) { out.cityBounds.extend(p); });
     out.framingPieces = framingPieces(out);
     for (const WallRecord& w : out.walls) out.facadeCells += size_t(w.floors) * w.slots;

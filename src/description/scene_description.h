@@ -29,8 +29,9 @@ namespace urbis {
 inline constexpr uint32_t kMaxImageSide = 65536;
 /// The most samples per pixel one render takes.
 inline constexpr uint32_t kMaxSpp = 1u << 20;
-/// The largest generated city (the layout's own limit is higher; this one keeps a render sane).
-inline constexpr uint64_t kMaxDescribedBuildings = 5'000'000;
+/// The largest generated city: the layout's own limit (layout/city_layout.h), the 10 million buildings
+/// that a GPU's memory holds (docs/scale.md § Millions of buildings).
+inline constexpr uint64_t kMaxDescribedBuildings = 10'000'000;
 
 /// Where the city comes from: an OSM file, or the generated city.
 struct SourceDescription {

@@ -2,6 +2,9 @@
 
 #include "accel/split_references.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cfloat>
 #include <stdexcept>
@@ -21,7 +24,10 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
                    const std::vector<LampRecord>& lamps, const std::vector<TreeRecord>& trees,
                    const TerrainField& terrain, const std::vector<PlanetRecord>& planets,
                    const std::vector<ForestRecord>& forests) {
-    const std::vector<WallRecord> walls = splitWallsIntoTiles(wholeWalls, tileSize);
+    // Whole walls are their own tiles: no copy of them is made.
+    const bool tiled = tileSize.slots > 0 || tileSize.floors > 0;
+    const std::vector<WallRecord> tiles = tiled ? splitWallsIntoTiles(wholeWalls, tileSize) : std::vector<WallRecord>{};
+    const std::vector<WallRecord>& walls = tiled ? tiles : wholeWalls;
     // Each kind's records in input order, as PrimKinds lists them.
     const std::vector<TerrainRecord> terrains = terrain.empty() ? std::vector<TerrainRecord>{} : std::vector{terrain.record};
     const auto inputs = std::tie(mesh.triangles, walls, grounds, lamps, terrains, trees, planets, forests);
@@ -35,6 +41,11 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
     });
     if (total >= (size_t(1) << 31)) throw std::length_error("scene: more than 2^31 primitives");
     first[kPrimKindCount] = uint32_t(total);
+    auto kindOf = [&](uint32_t prim) {
+        uint32_t k = 0;
+        while (prim >= first[k + 1]) ++k;
+        return k;
+    };
 
     // Street surfaces (what lies within kLowLayer of the ground) follow streets at any angle: on a
     // diagonal grid a sidewalk's or a curb's box is many times its area, so each is given several
@@ -43,81 +54,125 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
     float lowTop = grounds.empty() ? -FLT_MAX : FLT_MAX;
     for (const GroundRecord& g : grounds) lowTop = std::min(lowTop, g.height + kLowLayer);
     const SplitOptions split;
-    std::vector<Bounds3f> treeBounds, rootBounds, pieces;
-    std::vector<uint32_t> treeIds, treeCosts, rootIds;
-    bool costly = false;
-    forEachPrimKind([&](auto kind) {
-        const auto& records = std::get<kind.index>(inputs);
-        for (size_t i = 0; i < records.size(); ++i) {
-            const uint32_t id = first[kind.index] + uint32_t(i);
-            const Bounds3f box = primBounds(records[i]);
-            if constexpr (kKindAtBvhRoot<kind.index>) {
-                static_assert(!kCostlyKind<kind.index>, "a kind at the root is tested where the traversal meets it");
-                rootIds.push_back(id);
-                rootBounds.push_back(box);
-                continue;
+    auto boundsOf = [&](uint32_t prim) {
+        Bounds3f box;
+        const uint32_t kind = kindOf(prim);
+        forEachPrimKind([&](auto k) {
+            if (k.index == kind) box = primBounds(std::get<k.index>(inputs)[prim - first[k.index]]);
+        });
+        return box;
+    };
+    // The pieces of primitive `prim` (none for a kind at the root), appended to `pieces`; its cost.
+    auto piecesOf = [&](uint32_t prim, std::vector<Bounds3f>& pieces) {
+        uint32_t cost = 1;
+        const uint32_t kind = kindOf(prim);
+        forEachPrimKind([&](auto k) {
+            if constexpr (kKindAtBvhRoot<k.index>) {
+                static_assert(!kCostlyKind<k.index>, "a kind at the root is tested where the traversal meets it");
+                return;
             }
-            pieces.assign(1, box);
-            if constexpr (std::is_same_v<PrimRecord<kind.index>, Triangle>) {
+            if (k.index != kind) return;
+            cost = PrimRecord<k.index>::kBvhCost;
+            const uint32_t i = prim - first[k.index];
+            const auto& record = std::get<k.index>(inputs)[i];
+            const Bounds3f box = primBounds(record);
+            if constexpr (std::is_same_v<PrimRecord<k.index>, Triangle>) {
                 const uint32_t material = mesh.info[i].material;
                 const bool emits = material < materials.size() && maxComponent(materials[material].emission) > 0.0f;
                 if (box.hi.y <= lowTop && !emits) {
-                    pieces.clear();
-                    splitTriangleBounds(records[i].p0, records[i].p1, records[i].p2, split, pieces);
+                    splitTriangleBounds(record.p0, record.p1, record.p2, split, pieces);
+                    return;
                 }
             }
-            for (const Bounds3f& piece : pieces) {
-                treeIds.push_back(id);
-                treeBounds.push_back(piece);
-                treeCosts.push_back(PrimRecord<kind.index>::kBvhCost);
+            pieces.push_back(box);
+        });
+        return cost;
+    };
+    // References of every primitive, in parallel: each one's count first, then its pieces in their
+    // place, so that the references' order (and the BVH) is the same for any thread count.
+    std::vector<uint32_t> firstRef(total + 1, 0);
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(total), 4096), [&](const tbb::blocked_range<uint32_t>& r) {
+        std::vector<Bounds3f> pieces;
+        for (uint32_t prim = r.begin(); prim != r.end(); ++prim) {
+            pieces.clear();
+            piecesOf(prim, pieces);
+            firstRef[prim + 1] = uint32_t(pieces.size());
+        }
+    });
+    for (size_t prim = 0; prim < total; ++prim) firstRef[prim + 1] += firstRef[prim];
+    const uint32_t refCount = firstRef[total];
+    std::vector<Bounds3f> treeBounds(refCount);
+    std::vector<uint32_t> treeIds(refCount), treeCosts;
+    bool costly = false;
+    forEachPrimKind([&](auto kind) {
+        costly |= kCostlyKind<kind.index> && !std::get<kind.index>(inputs).empty();
+    });
+    if (costly) treeCosts.resize(refCount);
+    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(total), 4096), [&](const tbb::blocked_range<uint32_t>& r) {
+        std::vector<Bounds3f> pieces;
+        for (uint32_t prim = r.begin(); prim != r.end(); ++prim) {
+            pieces.clear();
+            const uint32_t cost = piecesOf(prim, pieces);
+            for (size_t p = 0; p < pieces.size(); ++p) {
+                const uint32_t ref = firstRef[prim] + uint32_t(p);
+                treeIds[ref] = prim;
+                treeBounds[ref] = pieces[p];
+                if (costly) treeCosts[ref] = cost;
             }
-            costly |= kCostlyKind<kind.index>;
         }
     });
     BvhBuildOptions options;
+    std::vector<uint32_t> rootIds;
+    for (uint32_t prim = 0; prim < total; ++prim)
+        if (firstRef[prim + 1] == firstRef[prim]) rootIds.push_back(prim);
+    std::vector<uint32_t>().swap(firstRef);
     options.freeRootLanes = uint32_t(std::min<size_t>(rootIds.size(), kBvhWidth - 2));
-    Bvh bvh = buildBvh(treeBounds, options, costly ? treeCosts : std::vector<uint32_t>{});
+    Bvh bvh = buildBvh(treeBounds, options, treeCosts);
+    std::vector<Bounds3f>().swap(treeBounds);
+    std::vector<uint32_t>().swap(treeCosts);
     for (uint32_t& prim : bvh.primOrder) prim = treeIds[prim];
-    for (size_t i = 0; i < rootIds.size(); ++i) attachLeafAtRoot(bvh, rootIds[i], rootBounds[i]);
+    std::vector<uint32_t>().swap(treeIds);
+    for (uint32_t prim : rootIds) attachLeafAtRoot(bvh, prim, boundsOf(prim));
 
     // Leaves in node order take the next slots of their kind, and each kind's records are stored in
     // that order, a split triangle once per reference: slot s of kind k is record s - kindStart(k).
-    Scene scene;
-    scene.triangles.reserve(mesh.size());
-    scene.triangleInfo.reserve(mesh.size());
-    scene.walls.reserve(walls.size());
-    scene.grounds.reserve(grounds.size());
-    scene.lamps.reserve(lamps.size());
-    scene.trees.reserve(trees.size());
-    scene.planets.reserve(planets.size());
-    auto kindOf = [&](uint32_t prim) {
-        uint32_t k = 0;
-        while (prim >= first[k + 1]) ++k;
-        return k;
-    };
     // A kind's slots start after every reference of the kinds before it (split triangles have several).
-    uint32_t refs[kPrimKindCount] = {}, next[kPrimKindCount];
+    uint32_t refs[kPrimKindCount] = {}, next[kPrimKindCount], kindStart[kPrimKindCount];
     for (uint32_t prim : bvh.primOrder) ++refs[kindOf(prim)];
-    for (uint32_t k = 0, start = 0; k < kPrimKindCount; start += refs[k++]) next[k] = start;
+    for (uint32_t k = 0, start = 0; k < kPrimKindCount; start += refs[k++]) next[k] = kindStart[k] = start;
+    // slot[i]: where the primitive at primOrder[i] is stored, among all kinds' slots.
+    std::vector<uint32_t> slot(bvh.primOrder.size());
     for (BvhNode& node : bvh.nodes)
         for (int l = 0; l < kBvhWidth; ++l) {
             const uint32_t size = node.leafSize(l);
             if (size == 0) continue;
             const uint32_t kind = kindOf(bvh.primOrder[node.child[l]]);
             for (uint32_t i = 0; i < size; ++i) {
-                const uint32_t prim = bvh.primOrder[node.child[l] + i];
-                if (kindOf(prim) != kind) throw std::logic_error("scene: a BVH leaf holds primitives of two kinds");
-                forEachPrimKind([&](auto k) {
-                    if (k.index != kind) return;
-                    using Record = typename decltype(k)::Record;
-                    const uint32_t record = prim - first[k.index];
-                    kindArray<Record>(scene).push_back(std::get<k.index>(inputs)[record]);
-                    if constexpr (std::is_same_v<Record, Triangle>) scene.triangleInfo.push_back(mesh.info[record]);
-                });
+                if (kindOf(bvh.primOrder[node.child[l] + i]) != kind)
+                    throw std::logic_error("scene: a BVH leaf holds primitives of two kinds");
+                slot[node.child[l] + i] = next[kind] + i;
             }
             node.child[l] = next[kind];
             next[kind] += size;
         }
+    Scene scene;
+    forEachPrimKind([&](auto k) {
+        using Record = typename decltype(k)::Record;
+        kindArray<Record>(scene).resize(refs[k.index]);
+        if constexpr (std::is_same_v<Record, Triangle>) scene.triangleInfo.resize(refs[k.index]);
+    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, slot.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+            const uint32_t prim = bvh.primOrder[i], kind = kindOf(prim);
+            forEachPrimKind([&](auto k) {
+                if (k.index != kind) return;
+                using Record = typename decltype(k)::Record;
+                const uint32_t record = prim - first[k.index], at = slot[i] - kindStart[k.index];
+                kindArray<Record>(scene)[at] = std::get<k.index>(inputs)[record];
+                if constexpr (std::is_same_v<Record, Triangle>) scene.triangleInfo[at] = mesh.info[record];
+            });
+        }
+    });
     scene.nodes = std::move(bvh.nodes);
     scene.materials = std::move(materials);
     scene.terrainData = terrain.data;
