@@ -317,13 +317,13 @@ BvhNode emptyWideNode() {
 /// The root takes at most `rootLanes` children (lanes left free for attachLeafAtRoot).
 std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLanes) {
     // Counted first, so that the array is allocated once at its size (growing held up to three times it).
-    size_t count = 0;
+    size_t nodeCount = 1;
     collapseDepthFirst<kBvhWidth>(binary, rootLanes, [&](uint32_t, const uint32_t* lanes, int laneCount, uint32_t* children) {
         for (int l = 0; l < laneCount; ++l)
-            if (!binary[lanes[l]].isLeaf()) children[l] = uint32_t(++count);
+            if (!binary[lanes[l]].isLeaf()) children[l] = uint32_t(nodeCount++);
     });
     std::vector<BvhNode> wide;
-    wide.reserve(count + 1);
+    wide.reserve(nodeCount);
     wide.push_back(emptyWideNode());
     collapseDepthFirst<kBvhWidth>(binary, rootLanes, [&](uint32_t at, const uint32_t* lanes, int count, uint32_t* children) {
         for (int l = 0; l < count; ++l) {
