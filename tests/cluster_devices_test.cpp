@@ -119,11 +119,13 @@ TEST(ClusterDevices, TilesOverCpuDevicesMakeTheFilmOfOneRender) {
 TEST(ClusterDevices, ADeviceThatFailsFailsTheFrame) {
     const Scene scene = test::wallScene(true);
     const RenderSettings settings = test::filmSettings(48, 32, 1);
-    CpuDevice good(scene, test::wallCamera(1.5f), settings);
+    // The good device sleeps 50 ms a tile, so that the failing one's thread takes a tile of the 24
+    // before they are gone, however late the scheduler starts it.
+    CpuDevice good(scene, test::wallCamera(1.5f), settings, std::chrono::milliseconds(50));
     FailingDevice bad;
     Film film(settings.width, settings.height, false);
     try {
-        renderTilesOnWorkers({&good, &bad}, tilesOf(settings.width, settings.height, 16), film);
+        renderTilesOnWorkers({&good, &bad}, tilesOf(settings.width, settings.height, 8), film);
         FAIL() << "the failing device's error was lost";
     } catch (const InputError& e) {
         EXPECT_STREQ(e.what(), "CUDA error: device lost");
