@@ -71,7 +71,7 @@ TEST(CliSceneFile, SavedSceneOfTheDefaultCommandHasEveryKey) {
     }
     for (const char* section : {"source", "camera", "sun", "astronomy", "sky", "materials", "geometry", "integrator", "film", "terrain", "water", "trees", "clouds"})
         EXPECT_TRUE(scene.contains(section)) << section;
-    EXPECT_EQ(keys, 149u) << "every key with its value (docs/scene_files.md)";
+    EXPECT_EQ(keys, 150u) << "every key with its value (docs/scene_files.md)";
     EXPECT_EQ(scene["integrator"]["rr_survival"], 0.95);
     EXPECT_EQ(scene["camera"]["position"], nullptr);
 }

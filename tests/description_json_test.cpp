@@ -101,7 +101,7 @@ TEST(DescriptionJson, SavedDefaultHasEveryKey) {
         "terrain.dual.mask_wavelength", "terrain.materials",
         "terrain.materials.sand_level", "terrain.materials.snow_level", "terrain.materials.rock_slope",
         "terrain.lei", "terrain.lei.a", "terrain.lei.b", "terrain.lei.c", "terrain.lei.bisections",
-        "terrain.reference_step", "water", "water.enabled", "water.max_depth", "water.shelf_width", "water.absorption",
+        "terrain.reference_step", "water", "water.enabled", "water.max_depth", "water.shelf_width", "water.bank_slope", "water.absorption",
         "water.bed_albedo", "water.wind_speed", "water.wind_from", "trees", "trees.enabled", "trees.seed",
         "trees.forest_density", "trees.park_density", "trees.scrub_density", "trees.outer_forest", "trees.outer_forest_cell",
         "trees.outer_forest_density", "trees.clearance",

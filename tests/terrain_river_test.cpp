@@ -1,8 +1,12 @@
 // Rivers mapped only as lines on a terrain: the ribbon's surface falls along the line in its flow
 // direction (the OSM way's), never rising, at or below the ground along it; the terrain is carved
-// under it; a line drawn uphill keeps the level of its start.
+// under it; a line drawn uphill keeps the level of its start; the banks rise from the water no
+// steeper than the bank slope; the generated city's river is such a line.
 #include "citygen/city_on_terrain.h"
 #include "citygen/city_scene.h"
+#include "citygen/city_terrain.h"
+#include "layout/city_layout.h"
+#include "layout/river.h"
 #include "citygen/water_on_terrain.h"
 #include "geometry/scene_intersect.h"
 #include "streets/water_depth.h"
@@ -31,6 +35,7 @@ WaterLevels placeStream(CityMesh& mesh, TerrainField& field, double from, double
     mesh = meshCity(city);
     EXPECT_EQ(mesh.waterFlows.size(), 1u);
     const WaterLevels levels = waterLevelsOn(mesh, field);
+    carveRiverBanks(field, mesh, levels, WaterOptions{});
     carveWaterBeds(field, mesh, levels, WaterOptions{});
     placeCityOnTerrain(mesh, field, levels);
     return levels;
@@ -83,6 +88,79 @@ TEST(TerrainRiver, ALineDrawnUphillKeepsTheLevelOfItsStart) {
     // Where the ground is highest, the water lies metres below it, in a carved trench.
     EXPECT_LT(river.at(-78.0f, 0.0f), ground(-78.0f, 0.0f) - 6.0f);
     EXPECT_LT(field.heightAt(-78.0f, 0.0f), river.at(-78.0f, 0.0f));
+}
+
+TEST(TerrainRiver, ItsBanksRiseNoSteeperThanTheBankSlope) {
+    // Drawn uphill, the stream keeps its start's level and runs metres below the ground westwards:
+    // the ground beside it falls to it at the bank slope (a valley, not a trench with walls), and
+    // ground already below that slope is not touched.
+    const TerrainField natural = slope();
+    TerrainField field = natural;
+    CityMesh mesh;
+    const WaterLevels levels = placeStream(mesh, field, 80, -80);
+    const WaterLevel& river = levels.begin()->second;
+    const float bankSlope = WaterOptions{}.bankSlope, lowest = river.level;
+    size_t carved = 0;
+    for (float x = -80.0f; x <= 80.0f; x += 2.0f)
+        for (float z = 2.0f; z <= 98.0f; z += 2.0f)
+            for (const float side : {-z, z}) {
+                // Sample (x, side); the samples under the water lie on z = 0, at the surface there.
+                const float h = field.heightAt(x, side), h0 = natural.heightAt(x, side);
+                EXPECT_LE(h, std::min(h0, river.at(x, 0.0f) + bankSlope * z) + 1e-3f) << x << "," << side;
+                if (h0 <= lowest + bankSlope * z) {
+                    EXPECT_EQ(h, h0) << x << "," << side;
+                }
+                carved += h < h0;
+            }
+    EXPECT_GT(carved, 500u);
+}
+
+TEST(TerrainRiver, TheGeneratedRiverFallsEastwardBetweenBanksOnFbmHills) {
+    LayoutParams params;
+    params.buildings = 800;
+    const CityModel city = generateCity(params);
+    const River river = River::generate(params.seed);
+    const Area* water = nullptr;
+    for (const Area& a : city.areas)
+        if (a.kind == AreaKind::Water) water = &a;
+    ASSERT_NE(water, nullptr);
+    ASSERT_GE(water->flowLine.size(), 2u);
+    EXPECT_LT(water->flowLine.front().x, water->flowLine.back().x) << "it flows west to east";
+    for (const Vec2d p : water->flowLine) EXPECT_DOUBLE_EQ(p.y, river.middleAt(p.x));
+    const double east = water->flowLine.back().x;
+
+    // With and without banks (a bank slope of 1000: walls): the banks must be what keeps the ground
+    // beside the water within the slope, so the test fails without them.
+    TerrainParams hills;
+    hills.kind = "fbm";
+    auto placed = [&](float bankSlope, float& widestRise) {
+        CityMesh mesh = meshCity(city);
+        WaterOptions options;
+        options.bankSlope = bankSlope;
+        const TerrainField field = cityTerrainOf(hills, GeoOrigin{}, mesh, options);
+        const float slopeRise = WaterOptions{}.bankSlope, cell = field.record.cell;
+        widestRise = 0;   // the most the ground beside the water rises above the bank slope
+        float before = INFINITY;
+        for (double x = -east + 40; x <= east - 40; x += 5) {
+            // The bed in the middle lies max_depth below the surface (the middle is farther than a
+            // shelf from the shore), falling eastwards (bilinear between samples: 0.5 m).
+            const float bed = field.heightAt(float(x), float(-river.middleAt(x)));
+            EXPECT_LE(bed, before + 0.5f) << x;
+            before = std::min(before, bed);
+            const float surface = bed + options.maxDepth;
+            const auto [south, north] = river.across(x);
+            for (double d = 5; d <= 120; d += 5)
+                for (const double y : {north + d, south - d}) {
+                    const float allowed = surface + slopeRise * float(d + 2 * cell) * 1.09f + 1.0f;
+                    widestRise = std::max(widestRise, field.heightAt(float(x), float(-y)) - allowed);
+                }
+        }
+    };
+    float withBanks = 0, withWalls = 0;
+    placed(WaterOptions{}.bankSlope, withBanks);
+    placed(1000.0f, withWalls);
+    EXPECT_LE(withBanks, 0.0f) << "the ground beside the river rises no steeper than the bank slope";
+    EXPECT_GT(withWalls, 5.0f) << "these hills would stand as walls over the river without banks";
 }
 
 TEST(TerrainRiver, AnAreaCoveringTheLineWins) {

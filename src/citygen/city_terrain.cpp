@@ -16,9 +16,10 @@ TerrainField cityTerrainOf(const TerrainParams& params, const GeoOrigin& origin,
         materials[uint32_t(TerrainMaterial::Grass)] = mesh.materials[mesh.groundMaterial];
     for (const Material& m : materials) mesh.materials.push_back(m);
     // Each water body at its level over the terrain, its bed: no flat layer under the surface to pass;
-    // the streets on the natural ground's smooth grade.
-    const std::vector<float> graded = smoothedHeights(terrain, kGradeRadius);
+    // the streets on the smooth grade of the natural ground with the rivers' banks (not their beds).
     const WaterLevels levels = waterLevelsOn(mesh, terrain);
+    carveRiverBanks(terrain, mesh, levels, water);
+    const std::vector<float> graded = smoothedHeights(terrain, kGradeRadius);
     carveWaterBeds(terrain, mesh, levels, water);
     gradeStreets(terrain, mesh, graded);
     for (Material& m : mesh.materials)

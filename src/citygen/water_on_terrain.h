@@ -37,6 +37,12 @@ std::map<uint32_t, std::vector<Triangle>> waterSurfacesOf(const CityMesh& mesh);
 /// sea and water beyond the grid lie over the flat ground as they do without a terrain.
 WaterLevels waterLevelsOn(const CityMesh& mesh, const TerrainField& terrain);
 
+/// Lowers every sample of `terrain` to at most the surface of the nearest river drawn from its line
+/// plus options.bankSlope times its distance from the water (a chamfer distance, within 8 % of the
+/// Euclidean one): banks instead of walls where a river runs below the hills around it, and the
+/// samples under the river at its surface at most; then rebuilds the hierarchy. Nothing without rivers.
+void carveRiverBanks(TerrainField& terrain, const CityMesh& mesh, const WaterLevels& levels, const WaterOptions& options);
+
 /// Lowers every sample of `terrain` under a water body to at most its surface there minus waterBedDepth of its
 /// distance to the shore (the bank's profile; maxDepth a shelf from the shore), so that the terrain is
 /// the bed and the shoreline is where it crosses the level; then rebuilds the hierarchy.

@@ -120,6 +120,7 @@ void visitSceneFields(Description& d, Visitor& v) {
         v.boolean("enabled", d.water.enabled);
         v.number("max_depth", d.water.maxDepth, 0.0f, 1000.0f);
         v.number("shelf_width", d.water.shelfWidth, 0.0f, 10000.0f);
+        v.number("bank_slope", d.water.bankSlope, 0.01f, 1000.0f);
         v.vec3("absorption", d.water.absorption, 0.0f, 100.0f);
         v.vec3("bed_albedo", d.water.bedAlbedo, 0.0f, 1.0f);
         v.number("wind_speed", d.water.windSpeed, 0.0f, 60.0f);

@@ -182,6 +182,7 @@ CityModel generateCity(const LayoutParams& params) {
         Area water;
         water.kind = AreaKind::Water;
         water.polygon.outer = river.polygon(-plan.radius, plan.radius);
+        water.flowLine = river.flowLine(-plan.radius, plan.radius);   // on a terrain it falls along it
         city.areas.push_back(std::move(water));
     }
     return city;

@@ -65,6 +65,16 @@ Ring River::polygon(double x0, double x1) const {
     return ring;
 }
 
+std::vector<Vec2d> River::flowLine(double x0, double x1) const {
+    const int steps = std::max(1, static_cast<int>(std::ceil((x1 - x0) / kPolygonStep)));
+    std::vector<Vec2d> line;
+    for (int i = 0; i <= steps; ++i) {
+        const double x = x0 + (x1 - x0) * i / steps;
+        line.push_back({x, middleAt(x)});
+    }
+    return line;
+}
+
 bool River::reaches(double radius) const { return std::abs(course_) - reach() < radius; }
 
 } // namespace urbis

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <utility>
+#include <vector>
 
 namespace urbis {
 
@@ -28,6 +29,8 @@ public:
     bool near(const Rect2d& r, double margin) const;
     /// The water between x0 and x1 as a counter-clockwise polygon, a vertex every 10 m of x.
     Ring polygon(double x0, double x1) const;
+    /// The river's middle between x0 and x1, a point every 10 m of x, west to east: the way it flows.
+    std::vector<Vec2d> flowLine(double x0, double x1) const;
     /// Whether the water comes within `radius` metres of (0, 0).
     bool reaches(double radius) const;
 
