@@ -157,6 +157,8 @@ TEST(WideBvhBuild, WellFormedAndConservativeForSeveralOptions) {
         options.maxLeafSize = leaf;
         SCOPED_TRACE(leaf);
         expectWellFormed(buildWideBvh(bounds, options), bounds, leaf);
+        options.leafGroupSize = 4;   // the SAH counting blocks of four, as buildWideTriangleScene builds it
+        expectWellFormed(buildWideBvh(bounds, options), bounds, leaf);
     }
     // Far from the origin, where a float's step is coarse, and in a box of zero extent on one axis.
     std::vector<Bounds3f> far = bounds;

@@ -52,6 +52,19 @@ TEST(WideLeafGroups, EachLeafSplitInOrderIntoGroups) {
     }
 }
 
+TEST(WideLeafGroups, SahCountingGroupsFillsThem) {
+    const std::vector<Bounds3f> bounds = test::triangleBounds(test::makeCityScene(6));
+    auto groupsWith = [&](uint32_t leafGroupSize) {
+        BvhBuildOptions options;
+        options.leafGroupSize = leafGroupSize;
+        WideBvh bvh = buildWideBvh(bounds, options);
+        return groupWideLeaves(bvh, 4).size();
+    };
+    const size_t perPrimitive = groupsWith(1), perGroup = groupsWith(4);
+    EXPECT_LT(perGroup, perPrimitive);
+    EXPECT_GT(double(bounds.size()) / double(perGroup), 2.5) << "triangles per group";
+}
+
 TEST(WideLeafGroups, BlocksHoldTheLeafTrianglesAndRepeatTheLast) {
     const std::vector<Triangle> tris = test::makeCityScene(4, 300, 200);
     const WideTriangleScene scene = buildWideTriangleScene(tris);

@@ -18,7 +18,8 @@ struct WideLeafGroup {
 /// makes the nodes address groups instead of primitives: a leaf lane's size (WideBvhNode::leafInfo)
 /// becomes its group count, keeping the costly bit, and primBase the node's first group; the nodes'
 /// groups follow one another in lane order, as their primitives did. Returns the groups, in primOrder.
-/// traverseWideBvh then hands its primitive callback a group index. `width` 1..15.
+/// traverseWideBvh then hands its primitive callback a group index. `width` 1..15; a tree built with
+/// BvhBuildOptions::leafGroupSize = width has leaves that fill their groups.
 std::vector<WideLeafGroup> groupWideLeaves(WideBvh& bvh, uint32_t width);
 
 } // namespace urbis

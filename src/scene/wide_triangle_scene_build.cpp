@@ -10,7 +10,9 @@ WideTriangleScene buildWideTriangleScene(const std::vector<Triangle>& triangles,
     WideTriangleScene scene;
     std::vector<Bounds3f> bounds(triangles.size());
     tbb::parallel_for(size_t(0), triangles.size(), [&](size_t i) { bounds[i] = primBounds(triangles[i]); });
-    scene.bvh = buildWideBvh(bounds, options);
+    BvhBuildOptions blockOptions = options;
+    blockOptions.leafGroupSize = kTriangleBlockWidth;
+    scene.bvh = buildWideBvh(bounds, blockOptions);
     scene.triangles.resize(triangles.size());
     tbb::parallel_for(size_t(0), triangles.size(), [&](size_t i) { scene.triangles[i] = triangles[scene.bvh.primOrder[i]]; });
     const std::vector<WideLeafGroup> groups = groupWideLeaves(scene.bvh, kTriangleBlockWidth);

@@ -19,7 +19,8 @@ struct WideTriangleScene {
     WideTriangleSceneView view() const { return {bvh.nodes.data(), blocks.data(), triangles.data(), uint32_t(triangles.size())}; }
 };
 
-/// buildWideBvh over the triangles' bounds (`options` as there), the triangles reordered by its
+/// buildWideBvh over the triangles' bounds (`options` as there, but with the SAH counting blocks:
+/// leafGroupSize = kTriangleBlockWidth), the triangles reordered by its
 /// primOrder, each leaf split into blocks of up to kTriangleBlockWidth (groupWideLeaves), a short
 /// block repeating its last triangle. Deterministic for any thread count.
 WideTriangleScene buildWideTriangleScene(const std::vector<Triangle>& triangles, const BvhBuildOptions& options = {});
