@@ -5,6 +5,7 @@
 #include "bench_scene.h"
 #include "geometry/triangle_scene.h"
 #include "geometry/wide_triangle_scene.h"
+#include "scene/wide_triangle_scene_build.h"
 #include "scene/camera_framing.h"
 
 #include <benchmark/benchmark.h>
@@ -155,9 +156,8 @@ struct BenchData {
     Bvh bvh = buildBvh(bounds);
     std::vector<Triangle> sorted = inLeafOrder(triangles, bvh.primOrder);
     TriangleSceneView view{bvh.nodes.data(), sorted.data(), uint32_t(sorted.size())};
-    WideBvh wide = buildWideBvh(bounds);
-    std::vector<Triangle> wideSorted = inLeafOrder(triangles, wide.primOrder);
-    WideTriangleSceneView wideView{wide.nodes.data(), wideSorted.data(), uint32_t(wideSorted.size())};
+    WideTriangleScene wide = buildWideTriangleScene(triangles);
+    WideTriangleSceneView wideView = wide.view();
     WideIsa isa = hostWideIsa();
     std::vector<Ray> primary = primaryRays(frameCity(sceneBounds(triangles), 50.0f, 1024.0f / 768.0f), 1024, 768);
     std::vector<Ray> diffuse = diffuseRays(view, primary);
@@ -229,8 +229,9 @@ void BM_BuildUrbis(benchmark::State& state) {
     state.counters["triangles_per_second"] =
         benchmark::Counter(double(d.triangles.size()) * double(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["triangles"] = double(d.triangles.size());
-    state.counters["nodes"] = double(Wide ? d.wide.nodes.size() : d.bvh.nodes.size());
-    state.counters["node_bytes"] = double(Wide ? d.wide.nodes.size() * sizeof(WideBvhNode) : d.bvh.nodes.size() * sizeof(BvhNode));
+    state.counters["nodes"] = double(Wide ? d.wide.bvh.nodes.size() : d.bvh.nodes.size());
+    state.counters["node_bytes"] = double(Wide ? d.wide.bvh.nodes.size() * sizeof(WideBvhNode) : d.bvh.nodes.size() * sizeof(BvhNode));
+    if (Wide) state.counters["block_bytes"] = double(d.wide.blocks.size() * sizeof(TriangleBlock));
     if (!Wide) state.counters["sah_cost"] = sahCost(d.bvh);
 }
 

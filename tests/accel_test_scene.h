@@ -4,6 +4,7 @@
 
 #include "accel/bvh_build.h"
 #include "accel/bvh_node.h"
+#include "accel/wide_bvh_traverse.h"
 #include "geometry/triangle_intersect.h"
 #include "scene/triangle.h"
 
@@ -13,6 +14,16 @@
 #include <vector>
 
 namespace urbis::test {
+
+/// The instruction sets of the wide traversal (lane test and block test) this CPU runs.
+inline std::vector<WideIsa> wideIsasHere() {
+    std::vector<WideIsa> isas{WideIsa::Scalar};
+#if URBIS_HAVE_SSE
+    isas.push_back(WideIsa::Sse);
+    if (hostWideIsa() == WideIsa::Avx2) isas.push_back(WideIsa::Avx2);
+#endif
+    return isas;
+}
 
 /// The 12 triangles of the closed box [lo, hi] (shared edges and vertices).
 inline void appendBox(std::vector<Triangle>& out, Vec3f lo, Vec3f hi) {

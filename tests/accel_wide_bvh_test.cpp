@@ -1,12 +1,15 @@
 // The 8-wide compressed BVH: its shape and conservative quantisation, a build the same for any
-// thread count, and closest hits equal to brute force and to the 4-wide BVH for every lane test.
+// thread count, its leaves in blocks, and closest hits equal to brute force and to the 4-wide BVH for
+// every lane test and block test.
 #include "accel/wide_bvh_build.h"
 #include "accel/wide_lanes_avx2.h"
+#include "accel/wide_leaf_groups.h"
 #include "accel_test_scene.h"
 #include "citygen/city_mesher.h"
 #include "geometry/triangle_scene.h"
 #include "geometry/wide_triangle_scene.h"
 #include "osm/osm_import.h"
+#include "scene/wide_triangle_scene_build.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -20,17 +23,25 @@ using namespace urbis;
 
 namespace {
 
-/// The lane tests this CPU can run.
-std::vector<WideIsa> isasHere() {
-    std::vector<WideIsa> isas{WideIsa::Scalar};
-#if URBIS_HAVE_SSE
-    isas.push_back(WideIsa::Sse);
-    if (hostWideIsa() == WideIsa::Avx2) isas.push_back(WideIsa::Avx2);
-#endif
-    return isas;
-}
-
 const char* isaName(WideIsa isa) { return isa == WideIsa::Scalar ? "scalar" : isa == WideIsa::Sse ? "SSE" : "AVX2"; }
+
+/// A traversal of the wide triangle scene with one lane test and one block test.
+struct WideTracer {
+    const char* name;   ///< lane test / block test
+    Hit (*trace)(const WideTriangleSceneView&, Ray, bool);
+};
+
+/// Every pairing of lane test and block test this CPU runs; the first is the scalar reference.
+std::vector<WideTracer> tracersHere() {
+    std::vector<WideTracer> tracers{{"scalar/scalar", traceWideTriangles<WideLanesScalar, TriangleBlockScalar>}};
+#if URBIS_HAVE_SSE
+    tracers.push_back({"scalar/SSE", traceWideTriangles<WideLanesScalar, TriangleBlockSse>});
+    tracers.push_back({"SSE/scalar", traceWideTriangles<WideLanesSse, TriangleBlockScalar>});
+    tracers.push_back({"SSE/SSE", traceWideTriangles<WideLanesSse, TriangleBlockSse>});
+    if (hostWideIsa() == WideIsa::Avx2) tracers.push_back({"AVX2/SSE in AVX2", traceWideTrianglesAvx2});
+#endif
+    return tracers;
+}
 
 unsigned lanesWith(WideIsa isa, const WideBvhNode& node, const BvhRay& r, const Ray& ray, float (&tEntry)[kWideBvhWidth]) {
 #if URBIS_HAVE_SSE
@@ -90,31 +101,32 @@ bool sameDistance(const Hit& a, const Hit& b) {
     return a.valid() == b.valid() && (!a.valid() || std::fabs(a.t - b.t) <= 1e-6f * b.t);
 }
 
-/// Traces `rays` through the wide BVH with every lane test this CPU has and expects the same hits,
-/// bit for bit, and the closest hit and any-hit answers of the checked 4-wide BVH (sameDistance; the
+/// Traces `rays` through the wide BVH with every lane test and block test this CPU has and expects
+/// the same hits, bit for bit, and the closest hit and any-hit answers of the checked 4-wide BVH (sameDistance; the
 /// same triangle unless two tie at that distance, on a shared edge). Every `bruteForceEvery`-th ray
 /// is also checked against brute force. Returns the number of hits.
 size_t expectSameHits(const std::vector<Triangle>& tris, const std::vector<Ray>& rays, size_t bruteForceEvery) {
     const std::vector<Bounds3f> bounds = test::triangleBounds(tris);
     const Bvh narrow = buildBvh(bounds);
-    const WideBvh wide = buildWideBvh(bounds);
-    const std::vector<Triangle> narrowTris = test::reorder(tris, narrow), wideTris = test::reorder(tris, wide);
+    const WideTriangleScene wide = buildWideTriangleScene(tris);
+    const std::vector<Triangle> narrowTris = test::reorder(tris, narrow);
     const TriangleSceneView narrowView{narrow.nodes.data(), narrowTris.data(), uint32_t(narrowTris.size())};
-    const WideTriangleSceneView wideView{wide.nodes.data(), wideTris.data(), uint32_t(wideTris.size())};
+    const WideTriangleSceneView wideView = wide.view();
+    const std::vector<WideTracer> tracers = tracersHere();
     std::atomic<size_t> hits{0}, exact{0}, tMismatch{0}, primMismatch{0}, anyMismatch{0}, isaMismatch{0}, bruteMismatch{0};
     tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
         const Hit reference = intersectClosest(narrowView, rays[i]);
-        const Hit got = traceWideTriangles(WideIsa::Scalar, wideView, rays[i], false);
-        for (WideIsa isa : isasHere()) {
-            const Hit other = traceWideTriangles(isa, wideView, rays[i], false);
+        const Hit got = tracers[0].trace(wideView, rays[i], false);
+        for (const WideTracer& tracer : tracers) {
+            const Hit other = tracer.trace(wideView, rays[i], false);
             if (std::memcmp(&other, &got, sizeof(Hit)) != 0) ++isaMismatch;
-            if (traceWideTriangles(isa, wideView, rays[i], true).valid() != got.valid()) ++anyMismatch;
+            if (tracer.trace(wideView, rays[i], true).valid() != got.valid()) ++anyMismatch;
         }
         if (!sameDistance(got, reference)) ++tMismatch;
         if (got.valid() && reference.valid()) {
             ++hits;
             exact += got.t == reference.t;
-            if (wide.primOrder[got.prim] != narrow.primOrder[reference.prim] && got.t != reference.t) ++primMismatch;
+            if (wide.bvh.primOrder[got.prim] != narrow.primOrder[reference.prim] && got.t != reference.t) ++primMismatch;
         }
         if (i % bruteForceEvery == 0 && !sameDistance(got, test::bruteForce(tris, rays[i]))) ++bruteMismatch;
     });
@@ -132,8 +144,10 @@ size_t expectSameHits(const std::vector<Triangle>& tris, const std::vector<Ray>&
 TEST(WideBvhBuild, EmptyInputIsNeverHit) {
     const WideBvh bvh = buildWideBvh({});
     ASSERT_EQ(bvh.nodes.size(), 1u);
-    const WideTriangleSceneView view{bvh.nodes.data(), nullptr, 0};
-    for (WideIsa isa : isasHere()) EXPECT_FALSE(traceWideTriangles(isa, view, Ray{{0, 1, 0}, {0, -1, 0}}, false).valid()) << isaName(isa);
+    const WideTriangleScene scene = buildWideTriangleScene({});
+    ASSERT_TRUE(scene.blocks.empty());
+    for (const WideTracer& tracer : tracersHere())
+        EXPECT_FALSE(tracer.trace(scene.view(), Ray{{0, 1, 0}, {0, -1, 0}}, false).valid()) << tracer.name;
 }
 
 TEST(WideBvhBuild, WellFormedAndConservativeForSeveralOptions) {
@@ -142,6 +156,8 @@ TEST(WideBvhBuild, WellFormedAndConservativeForSeveralOptions) {
         BvhBuildOptions options;
         options.maxLeafSize = leaf;
         SCOPED_TRACE(leaf);
+        expectWellFormed(buildWideBvh(bounds, options), bounds, leaf);
+        options.leafGroupSize = 4;   // the SAH counting blocks of four, as buildWideTriangleScene builds it
         expectWellFormed(buildWideBvh(bounds, options), bounds, leaf);
     }
     // Far from the origin, where a float's step is coarse, and in a box of zero extent on one axis.
@@ -208,7 +224,7 @@ TEST(WideBvhTraverse, LaneTestsAgreeBitForBit) {
         for (size_t n = 0; n < bvh.nodes.size(); n += 7) {
             float expected[kWideBvhWidth];
             const unsigned expectedMask = lanesWith(WideIsa::Scalar, bvh.nodes[n], r, ray, expected);
-            for (WideIsa isa : isasHere()) {
+            for (WideIsa isa : test::wideIsasHere()) {
                 float got[kWideBvhWidth];
                 ASSERT_EQ(lanesWith(isa, bvh.nodes[n], r, ray, got), expectedMask) << isaName(isa) << " node " << n;
                 for (int l = 0; l < kWideBvhWidth; ++l)

@@ -165,6 +165,11 @@ private:
             [&](BinSet x, const BinSet& y) { x.merge(y, map.binCount); return x; });
     }
 
+    /// The SAH's cost of a leaf of primitives costing `cost` units: whole groups of leafGroupSize.
+    float leafCostOf(uint32_t cost) const {
+        return float((cost + options_.leafGroupSize - 1) / options_.leafGroupSize);
+    }
+
     /// The cheapest SAH split over all axes (Wald 2007, section 3), relative to the
     /// node's area.
     Split findSplit(uint32_t b, uint32_t e, const BinMapping& map, float nodeHalfArea) const {
@@ -183,7 +188,7 @@ private:
                 grow(acc, bins[i].bounds);
                 count += bins[i].count;
                 cost += bins[i].cost;
-                rightCost[i] = count > 0 ? halfArea(acc) * float(cost) : -1.0f;
+                rightCost[i] = count > 0 ? halfArea(acc) * leafCostOf(cost) : -1.0f;
             }
             acc = Bounds3f{};
             count = cost = 0;
@@ -193,7 +198,7 @@ private:
                 cost += bins[i - 1].cost;
                 if (count == 0 || rightCost[i] < 0.0f) continue;
                 const float splitCost = options_.traversalCost +
-                                        options_.intersectionCost * (halfArea(acc) * float(cost) + rightCost[i]) / nodeHalfArea;
+                                        options_.intersectionCost * (halfArea(acc) * leafCostOf(cost) + rightCost[i]) / nodeHalfArea;
                 if (best.axis < 0 || splitCost < best.cost) {
                     best.axis = axis;
                     best.bin = i;
@@ -228,7 +233,7 @@ private:
         uint32_t mid;
         if (splittable && depth < kMedianSplitDepth) {
             const Split split = findSplit(b, e, map, halfArea(box));
-            const float leafCost = options_.intersectionCost * float(split.primCost);
+            const float leafCost = options_.intersectionCost * leafCostOf(split.primCost);
             if (split.axis < 0 || (leafAllowed && leafCost <= split.cost)) {
                 if (leafAllowed) {
                     slots_[slot] = makeNode(box, b, count);

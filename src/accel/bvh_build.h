@@ -15,6 +15,9 @@ struct BvhBuildOptions {
     uint32_t maxLeafSize = 8;          ///< a node with more primitives is always split
     float traversalCost = 1.0f;        ///< cost of visiting one interior node
     float intersectionCost = 1.0f;     ///< cost of testing one primitive
+    /// Primitive cost units a leaf test takes at once (a TriangleBlock's four triangles): the SAH
+    /// counts a leaf's cost in whole groups of this many units. 1: per primitive.
+    uint32_t leafGroupSize = 1;
     uint32_t parallelThreshold = 8192; ///< nodes with fewer primitives are built by one task
     /// Lanes of the root left free for attachLeafAtRoot (at most kBvhWidth - 2), so that what it
     /// attaches costs no level more.

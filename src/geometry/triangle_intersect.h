@@ -43,6 +43,16 @@ URBIS_HD inline float differenceOfProductsUnfused(float a, float b, float c, flo
     return exactSub(exactMul(a, b), exactMul(c, d));
 }
 
+/// The edge functions e0, e1, e2 of the sheared vertices again in double, where the products and the
+/// difference are exact, rounded once to float: for a ray through an edge or a vertex, where one of
+/// them is zero in float (Woop, Benthin, Wald 2013, section 3.3).
+URBIS_HD inline void edgeFunctionsInDouble(float ax, float ay, float bx, float by, float cx, float cy, float& e0,
+                                           float& e1, float& e2) {
+    e0 = static_cast<float>(double(cx) * double(by) - double(cy) * double(bx));
+    e1 = static_cast<float>(double(ax) * double(cy) - double(ay) * double(cx));
+    e2 = static_cast<float>(double(bx) * double(ay) - double(by) * double(ax));
+}
+
 /// Watertight intersection of a ray with a two-sided triangle (Woop, Benthin, Wald 2013):
 /// rays through a shared edge or vertex of a closed mesh always hit one of its triangles.
 /// On a hit with ray.tmin < t < ray.tmax (strictly) returns true and sets t (in units of
@@ -66,11 +76,7 @@ URBIS_HD inline bool intersectTriangle(const Triangle& tri, const Ray& ray, cons
     float e1 = differenceOfProductsUnfused(ax, cy, ay, cx);
     float e2 = differenceOfProductsUnfused(bx, ay, by, ax);
     // Exactly on an edge in float: decide in double, which is exact here (section 3.3).
-    if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {
-        e0 = static_cast<float>(double(cx) * double(by) - double(cy) * double(bx));
-        e1 = static_cast<float>(double(ax) * double(cy) - double(ay) * double(cx));
-        e2 = static_cast<float>(double(bx) * double(ay) - double(by) * double(ax));
-    }
+    if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) edgeFunctionsInDouble(ax, ay, bx, by, cx, cy, e0, e1, e2);
     // Both faces: the edge functions must not have mixed signs.
     if ((e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f)) return false;
     const float det = e0 + e1 + e2;

@@ -5,6 +5,7 @@
 #include "accel/bvh_node.h"
 #include "accel/wide_bvh_node.h"
 #include "scene/triangle.h"
+#include "scene/triangle_block.h"
 
 #include <cstdint>
 
@@ -18,9 +19,12 @@ struct TriangleSceneView {
     uint32_t triangleCount;
 };
 
-/// The same over an 8-wide compressed BVH: nodes from buildWideBvh, triangles in its primOrder.
+/// The same over an 8-wide compressed BVH (buildWideTriangleScene): nodes from buildWideBvh whose
+/// leaves address blocks (groupWideLeaves), the blocks, and the triangles in the BVH's primOrder, which
+/// the blocks' prim indices and Hit::prim index.
 struct WideTriangleSceneView {
     const WideBvhNode* nodes;
+    const TriangleBlock* blocks;
     const Triangle* triangles;
     uint32_t triangleCount;
 };
