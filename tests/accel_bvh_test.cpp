@@ -32,8 +32,8 @@ void expectWellFormed(const Bvh& bvh, const std::vector<Bounds3f>& primBounds, u
                 walk.push(n.child[l], it, box);
                 continue;
             }
-            EXPECT_LE(n.leafSize(l), maxLeafSize);
-            for (uint32_t i = n.child[l]; i < n.child[l] + n.leafSize(l); ++i) {
+            EXPECT_LE(n.primCount[l], maxLeafSize);
+            for (uint32_t i = n.child[l]; i < n.child[l] + n.primCount[l]; ++i) {
                 ++seen[i];
                 EXPECT_TRUE(test::inside(primBounds[bvh.primOrder[i]], box));
             }
@@ -107,29 +107,19 @@ TEST(BvhBuild, ExpensivePrimitivesGetLeavesOfTheirOwn) {
     auto largestLeaf = [](const Bvh& bvh) {
         uint32_t largest = 0;
         for (const BvhNode& n : bvh.nodes)
-            for (int l = 0; l < kBvhWidth; ++l) largest = std::max(largest, n.leafSize(l));
+            for (int l = 0; l < kBvhWidth; ++l) largest = std::max(largest, n.primCount[l]);
         return largest;
     };
     EXPECT_EQ(largestLeaf(buildBvh(walls)), 4u);
     const Bvh weighted = buildBvh(walls, BvhBuildOptions{}, std::vector<uint32_t>(walls.size(), 16u));
     expectWellFormed(weighted, walls, BvhBuildOptions{}.maxLeafSize);
     EXPECT_EQ(largestLeaf(weighted), 1u);
-    // Leaves of primitives that cost more than a triangle are marked, for the traversal to defer them.
-    auto costlyLeaves = [](const Bvh& bvh) {
-        int costly = 0;
-        for (const BvhNode& n : bvh.nodes)
-            for (int l = 0; l < kBvhWidth; ++l) costly += n.costlyLeaf(l) ? 1 : 0;
-        return costly;
-    };
-    EXPECT_EQ(costlyLeaves(buildBvh(walls)), 0);
-    EXPECT_EQ(costlyLeaves(weighted), 4);
     // Each alone, even where SAH would keep them together: here two walls with the same box.
     std::vector<Bounds3f> twice = walls;
     twice.push_back(walls[0]);
     const Bvh doubled = buildBvh(twice, BvhBuildOptions{}, std::vector<uint32_t>(twice.size(), 16u));
     expectWellFormed(doubled, twice, BvhBuildOptions{}.maxLeafSize);
     EXPECT_EQ(largestLeaf(doubled), 1u);
-    EXPECT_EQ(costlyLeaves(doubled), 5);
 }
 
 TEST(BvhTraverse, ClosestHitEqualsBruteForce) {

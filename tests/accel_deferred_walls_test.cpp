@@ -1,9 +1,9 @@
-// The GPU's traversal defers wall tests until its warp's lanes all hold one (traverseBvh's Defer);
+// The GPU's traversal defers wall tests until its warp's lanes all hold one (traverseWideBvh's Defer);
 // the CPU tests walls where it meets them. Both must find the same hit, bit for bit: here the
 // deferred traversal runs on the CPU (each ray its own warp) against the immediate one, on a
 // generated city and on primitives that all tie, where only the tie rule (the lower slot wins)
 // decides.
-#include "accel/bvh_build.h"
+#include "accel/wide_bvh_build.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
 #include "geometry/scene_intersect.h"
@@ -77,8 +77,10 @@ TEST(AccelDeferredWalls, TiesGoToTheLowerSlotDeferredOrNot) {
     box.extend(Vec3f{1, 1, 1});
     std::vector<uint32_t> costs;
     for (uint32_t k = 0; k < 8; ++k) costs.push_back(k % 2 == 0 ? 16u : 1u);
-    const Bvh bvh = buildBvh(std::vector<Bounds3f>(8, box), BvhBuildOptions{}, costs);
-    ASSERT_TRUE(bvh.nodes[0].costlyLeaf(0) || bvh.nodes[0].costlyLeaf(1) || bvh.nodes[0].costlyLeaf(2));
+    const WideBvh bvh = buildWideBvh(std::vector<Bounds3f>(8, box), BvhBuildOptions{}, costs);
+    bool costlyLeaf = false;
+    for (int l = 0; l < kWideBvhWidth; ++l) costlyLeaf |= bvh.nodes[0].costlyLeaf(l);
+    ASSERT_TRUE(costlyLeaf);
     ASSERT_EQ(costs[bvh.primOrder[0]], 16u) << "slot 0 must be costly for the test to tell";
     // The ray enters the box at t = 10 and leaves it at 11.
     auto atTenAndAHalf = [](uint32_t slot, Ray& r, Hit& h) {
@@ -90,10 +92,10 @@ TEST(AccelDeferredWalls, TiesGoToTheLowerSlotDeferredOrNot) {
     for (bool anyHit : {false, true}) {
         Ray deferred{Vec3f{0.5f, 0.5f, -10.0f}, Vec3f{0, 0, 1}}, immediate = deferred;
         Hit d, i;
-        ASSERT_TRUE((traverseBvh<true, true>(bvh.nodes.data(), BvhRay(deferred), deferred, d, anyHit, atTenAndAHalf,
-                                             atTenAndAHalf)));
-        ASSERT_TRUE((traverseBvh<true, false>(bvh.nodes.data(), BvhRay(immediate), immediate, i, anyHit, atTenAndAHalf,
-                                              atTenAndAHalf)));
+        ASSERT_TRUE((traverseWideBvh<WideLanesScalar, true, true>(bvh.nodes.data(), BvhRay(deferred), deferred, d,
+                                                                  anyHit, atTenAndAHalf, atTenAndAHalf)));
+        ASSERT_TRUE((traverseWideBvh<WideLanesScalar, true, false>(bvh.nodes.data(), BvhRay(immediate), immediate, i,
+                                                                   anyHit, atTenAndAHalf, atTenAndAHalf)));
         if (!anyHit) {
             EXPECT_EQ(d.prim, 0u);
             EXPECT_EQ(i.prim, 0u);

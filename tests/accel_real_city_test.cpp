@@ -1,6 +1,6 @@
-// The BVH over a real imported city against brute force: 100k random rays, same triangle and distance.
+// The scene's BVH over a real imported city against brute force: 100k random rays, same triangle and distance.
 #include "citygen/city_mesher.h"
-#include "geometry/triangle_scene.h"
+#include "geometry/scene_intersect.h"
 #include "math/rng.h"
 #include "math/sampling.h"
 #include "osm/osm_import.h"
@@ -42,13 +42,12 @@ TriangleMesh plainCity(const CityMesh& mesh) {
 
 } // namespace
 
-TEST(AccelRealCity, ClosestHitsEqualBruteForceOnTheBavarianVillage) {
+TEST(AccelRealCity, SceneHitsEqualBruteForceOnTheBavarianVillage) {
     CityModel city = importOsm(URBIS_OSMNX_DATA "/planet_10.068,48.135_10.071,48.137.osm", ImportOptions{});
     CityMesh mesh = meshCity(city);
     Scene scene = Scene::build(plainCity(mesh), mesh.materials);
     ASSERT_GT(scene.triangles.size(), 500u);
-    // Triangles are the first kind, so in a scene of triangles alone a leaf slot is a triangle's index.
-    const TriangleSceneView view{scene.nodes.data(), scene.triangles.data(), uint32_t(scene.triangles.size())};
+    const SceneView view = scene.view();
     Bounds3f b = mesh.cityBounds;
     size_t hits = 0, mismatches = 0;
     constexpr uint32_t kRays = 100000;
@@ -65,14 +64,14 @@ TEST(AccelRealCity, ClosestHitsEqualBruteForceOnTheBavarianVillage) {
             dir = normalize((t.p0 + t.p1 + t.p2) / 3.0f - o);
         }
         Ray ray{o, dir};
-        Hit fast = intersectClosest(view, ray);
-        Hit slow = bruteForce(scene, ray);
+        const SurfaceHit fast = intersectScene(view, ray);
+        const Hit slow = bruteForce(scene, ray);
         ASSERT_EQ(fast.valid(), slow.valid()) << "ray " << i;
-        EXPECT_EQ(occluded(view, ray), slow.valid()) << "ray " << i;
+        EXPECT_EQ(occludedScene(view, ray), slow.valid()) << "ray " << i;
         if (!slow.valid()) continue;
         ++hits;
         // Equal distances may belong to two triangles sharing the hit edge: then either is right.
-        if (fast.prim != slow.prim && fast.t != slow.t) ++mismatches;
+        if (fast.index != slow.prim && fast.t != slow.t) ++mismatches;
         EXPECT_NEAR(fast.t, slow.t, 1e-6f * slow.t) << "ray " << i;
     }
     EXPECT_EQ(mismatches, 0u);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace urbis;
@@ -82,17 +83,23 @@ TEST(PrimKinds, LeafSlotsLieInTheirKindsRangeAndTheGroundAtTheRoot) {
     EXPECT_EQ(view.kindEnd[1], 1u + uint32_t(scene.walls.size()));
     EXPECT_EQ(view.kindEnd[2], view.kindEnd[1] + 1u);
     EXPECT_TRUE(view.costlyLeaves);
+    // The ground hangs from the root; every leaf position reaches its own slot, walls' leaves costly.
     bool groundAtRoot = false;
-    for (int l = 0; l < kBvhWidth; ++l)
-        groundAtRoot |= scene.nodes[0].leafSize(l) == 1 && scene.nodes[0].child[l] == view.kindEnd[1];
+    for (int l = 0; l < kWideBvhWidth; ++l)
+        groundAtRoot |= scene.nodes[0].leafSize(l) == 1 &&
+                        scene.leafSlots[wideLeafFirst(scene.nodes[0], l)] == view.kindEnd[1];
     EXPECT_TRUE(groundAtRoot);
-    for (const BvhNode& node : scene.nodes)
-        for (int l = 0; l < kBvhWidth; ++l) {
-            if (node.leafSize(l) == 0) continue;
-            const uint32_t first = node.child[l];
-            const bool wall = first >= view.kindEnd[0] && first < view.kindEnd[1];
-            EXPECT_EQ(node.costlyLeaf(l), wall) << "slot " << first;
-        }
+    std::vector<uint32_t> slots = scene.leafSlots;
+    std::sort(slots.begin(), slots.end());
+    for (uint32_t i = 0; i < slots.size(); ++i) ASSERT_EQ(slots[i], i);
+    EXPECT_EQ(slots.size(), size_t(view.kindEnd[kPrimKindCount - 1]));
+    for (const WideBvhNode& node : scene.nodes)
+        for (int l = 0; l < kWideBvhWidth; ++l)
+            for (uint32_t i = 0; i < node.leafSize(l); ++i) {
+                const uint32_t slot = scene.leafSlots[wideLeafFirst(node, l) + i];
+                const bool wall = slot >= view.kindEnd[0] && slot < view.kindEnd[1];
+                EXPECT_EQ(node.costlyLeaf(l), wall) << "slot " << slot;
+            }
 }
 
 TEST(SurfaceHitRecord, EachKindGivesPositionFrameUvMaterialAndIds) {
@@ -156,9 +163,9 @@ TEST(SceneArrays, MemoryListsEveryArrayOnce) {
         sum += bytes;
         ++arrays;
     });
-    EXPECT_EQ(arrays, 30u);   // the eight kinds' records, triangle info, nodes, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples, the clouds' layer and three tables
+    EXPECT_EQ(arrays, 31u);   // the eight kinds' records, triangle info, nodes, leaf slots, materials, road segments, the ten light arrays, the atmosphere's three tables and the terrain's samples, the clouds' layer and three tables
     EXPECT_EQ(sum, memory.total());
     EXPECT_EQ(memory.grounds, sizeof(GroundRecord));
     EXPECT_EQ(memory.walls, scene.walls.size() * sizeof(WallRecord));
-    EXPECT_EQ(memory.nodes, scene.nodes.size() * sizeof(BvhNode));
+    EXPECT_EQ(memory.nodes, scene.nodes.size() * sizeof(WideBvhNode));
 }

@@ -54,6 +54,7 @@ TEST(NightLamps, ProfileCarriesTheLuminousFlux) {
     Scene scene = nightScene(TriangleMesh{}, planeAndLampMaterials({0.5f, 0.5f, 0.5f}), {}, lamps);
     buildLights(scene);
     ASSERT_EQ(scene.lampLights.size(), lamps.size());
+    lamps = scene.lamps;   // the scene's lamps are in leaf order, and so are their lights
     for (size_t i = 0; i < lamps.size(); ++i) {
         const LampEmitter& lamp = scene.lampLights[i];
         double flux = 0;

@@ -319,18 +319,17 @@ BvhNode emptyWideNode() {
 
 /// Collapses the binary tree into 4-wide nodes (gatherLanes). Depth first, so siblings'
 /// subtrees stay close in memory.
-/// The root takes at most `rootLanes` children (lanes left free for attachLeafAtRoot).
-std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLanes) {
+std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary) {
     // Counted first, so that the array is allocated once at its size (growing held up to three times it).
     size_t nodeCount = 1;
-    collapseDepthFirst<kBvhWidth>(binary, rootLanes, [&](uint32_t, const uint32_t* lanes, int laneCount, uint32_t* children) {
+    collapseDepthFirst<kBvhWidth>(binary, kBvhWidth, [&](uint32_t, const uint32_t* lanes, int laneCount, uint32_t* children) {
         for (int l = 0; l < laneCount; ++l)
             if (!binary[lanes[l]].isLeaf()) children[l] = uint32_t(nodeCount++);
     });
     std::vector<BvhNode> wide;
     wide.reserve(nodeCount);
     wide.push_back(emptyWideNode());
-    collapseDepthFirst<kBvhWidth>(binary, rootLanes, [&](uint32_t at, const uint32_t* lanes, int count, uint32_t* children) {
+    collapseDepthFirst<kBvhWidth>(binary, kBvhWidth, [&](uint32_t at, const uint32_t* lanes, int count, uint32_t* children) {
         for (int l = 0; l < count; ++l) {
             const BinaryNode& n = binary[lanes[l]];
             if (!n.isLeaf()) {
@@ -347,14 +346,6 @@ std::vector<BvhNode> collapse(const std::vector<BinaryNode>& binary, int rootLan
         }
     });
     return wide;
-}
-
-/// Sets kBvhCostlyLeaf on the leaves that hold a primitive of cost above one (each alone).
-void markCostlyLeaves(const std::vector<uint32_t>& primCosts, Bvh& bvh) {
-    for (BvhNode& node : bvh.nodes)
-        for (int l = 0; l < kBvhWidth; ++l)
-            for (uint32_t i = node.child[l]; i < node.child[l] + node.leafSize(l); ++i)
-                if (primCosts[bvh.primOrder[i]] > 1) node.primCount[l] |= kBvhCostlyLeaf;
 }
 
 } // namespace
@@ -401,39 +392,8 @@ Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& opt
     }
     BinaryBvh binary = buildBinaryBvh(primBounds, options, primCosts);
     bvh.primOrder = std::move(binary.primOrder);
-    bvh.nodes = collapse(binary.nodes, std::max(2, kBvhWidth - int(options.freeRootLanes)));
-    if (!primCosts.empty()) markCostlyLeaves(primCosts, bvh);
+    bvh.nodes = collapse(binary.nodes);
     return bvh;
-}
-
-void attachLeafAtRoot(Bvh& bvh, uint32_t prim, const Bounds3f& bounds) {
-    int lane = -1;
-    for (int l = 0; l < kBvhWidth && lane < 0; ++l)
-        if (bvh.nodes[0].primCount[l] == 0 && bvh.nodes[0].box(l).empty()) lane = l;
-    if (lane < 0) {
-        // A new root above the old one, which moves every node up by one.
-        Bounds3f old;
-        for (int l = 0; l < kBvhWidth; ++l) old.extend(bvh.nodes[0].box(l));
-        for (BvhNode& node : bvh.nodes)
-            for (int l = 0; l < kBvhWidth; ++l)
-                if (node.primCount[l] == 0 && !node.box(l).empty()) ++node.child[l];
-        BvhNode root = emptyWideNode();
-        for (int axis = 0; axis < 3; ++axis) {
-            root.bounds[axis][0] = old.lo[axis];
-            root.bounds[axis + 3][0] = old.hi[axis];
-        }
-        root.child[0] = 1;
-        bvh.nodes.insert(bvh.nodes.begin(), root);
-        lane = 1;
-    }
-    BvhNode& root = bvh.nodes[0];
-    for (int axis = 0; axis < 3; ++axis) {
-        root.bounds[axis][lane] = bounds.lo[axis];
-        root.bounds[axis + 3][lane] = bounds.hi[axis];
-    }
-    root.child[lane] = uint32_t(bvh.primOrder.size());
-    root.primCount[lane] = 1;
-    bvh.primOrder.push_back(prim);
 }
 
 float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
@@ -446,7 +406,7 @@ float sahCost(const Bvh& bvh, const BvhBuildOptions& options) {
         for (int l = 0; l < kBvhWidth; ++l) {
             const double relArea = node.box(l).area() / rootArea;
             if (node.primCount[l] > 0)
-                cost += relArea * options.intersectionCost * node.leafSize(l);
+                cost += relArea * options.intersectionCost * node.primCount[l];
             else if (!node.box(l).empty())
                 cost += relArea * options.traversalCost;
         }

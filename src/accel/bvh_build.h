@@ -19,9 +19,6 @@ struct BvhBuildOptions {
     /// counts a leaf's cost in whole groups of this many units. 1: per primitive.
     uint32_t leafGroupSize = 1;
     uint32_t parallelThreshold = 8192; ///< nodes with fewer primitives are built by one task
-    /// Lanes of the root left free for attachLeafAtRoot (at most kBvhWidth - 2), so that what it
-    /// attaches costs no level more.
-    uint32_t freeRootLanes = 0;
 };
 
 /// A BVH: flat 4-wide nodes (nodes[0] is the root) and the primitive order of its leaves.
@@ -39,16 +36,10 @@ struct Bvh {
 /// stays under 64 levels (object-median splits from depth 32 on), so traversal stacks of
 /// kBvhStackSize never overflow. An empty input gives one empty node that no ray hits.
 /// `primCosts` weighs each primitive's intersection cost in units of intersectionCost (empty: 1
-/// each); a primitive of cost above one (a procedural wall) gets a leaf of its own, marked with
-/// kBvhCostlyLeaf. Integers keep the parallel build deterministic.
+/// each); a primitive of cost above one (a procedural wall) gets a leaf of its own. Integers keep
+/// the parallel build deterministic.
 Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options = {},
              const std::vector<uint32_t>& primCosts = {});
-
-/// Adds primitive `prim` (of world bounds `bounds`) as a leaf of its own in the root node, in a free
-/// lane or else under a new root above the old one, at leaf slot primOrder.size(). For a primitive
-/// far larger than the rest (the ground): built into the tree, its box would widen every node above
-/// its leaf, which every ray would then visit.
-void attachLeafAtRoot(Bvh& bvh, uint32_t prim, const Bounds3f& bounds);
 
 /// The SAH cost of a built BVH: traversalCost per node visited and intersectionCost per
 /// primitive tested, each weighted by its box's area relative to the root's.

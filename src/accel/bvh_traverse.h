@@ -107,197 +107,67 @@ URBIS_HD inline bool warpAll(bool wants) {
 #endif
 }
 
-/// Sorts four keys in ascending order (a network of five compare-exchanges: no branches; the GPU's
-/// traversal orders a node's children with it).
-URBIS_HD inline void sortFour(uint32_t (&k)[4]) {
-    auto exchange = [&](int a, int b) {
-        const uint32_t lo = k[a] < k[b] ? k[a] : k[b], hi = k[a] < k[b] ? k[b] : k[a];
-        k[a] = lo;
-        k[b] = hi;
-    };
-    exchange(0, 1);
-    exchange(2, 3);
-    exchange(0, 2);
-    exchange(1, 3);
-    exchange(1, 2);
-}
-
 /// Closest-hit or any-hit (`anyHit`) traversal of a BVH built by buildBvh, in world space.
 /// intersect(uint32_t prim, Ray& ray, HitRecord& hit) -> bool tests one primitive (prim indexes leaf
 /// order, i.e. positions in the build's primOrder); on a hit it fills hit and shrinks ray.tmax.
 /// Leaves of a visited node are tested at once (shrinking ray.tmax early); interior children are
 /// visited nearest first and skipped when they start beyond the closest hit so far; any-hit
 /// queries return at the first hit. Returns whether anything was hit. No allocation; fixed-size
-/// stack. `anyHit` is a run-time flag so that one inlined copy can serve both queries where code
-/// size matters (the GPU path tracer: see traceScene).
-///
-/// With CostlyLeaves, leaves marked kBvhCostlyLeaf go to intersectCostly instead. With Defer (by
-/// default on the GPU only, where it pays) they are deferred: a lane holds one such leaf and goes on
-/// with the traversal (or, with nothing else to do, waits) until every lane of its warp that is
-/// traversing holds one (warpAll), so that the costly test runs with all of them; without, they
-/// are tested where the traversal meets them. The order of tests then differs, so equal distances
-/// go to the lower primitive index: the CPU and the GPU find the same hit. The CPU's tests run the
-/// deferred traversal too, each ray its own warp. HitRecord is the callers' (Hit, or geometry/'s
-/// PrimHit); the traversal only passes it on.
-template <bool CostlyLeaves, bool Defer = CostlyLeaves && URBIS_GPU_CODE, typename HitRecord, typename IntersectPrim,
-          typename IntersectCostly>
+/// stack. The renderer traverses the 8-wide BVH (wide_bvh_traverse.h); this one is the reference
+/// the tests and urbis_bench compare it with.
+template <typename HitRecord, typename IntersectPrim>
 URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, HitRecord& hit, bool anyHit,
-                          IntersectPrim&& intersect, IntersectCostly&& intersectCostly) {
-    // A deferred leaf (one primitive: see buildBvh) on the stack or pending: its slot, with kLeafItem set.
-    constexpr uint32_t kNoItem = 0xffffffffu, kLeafItem = 0x80000000u;
-    constexpr uint32_t kLaneBits = kBvhWidth - 1;
-    static_assert(CostlyLeaves || !Defer, "only costly leaves are deferred");
-    constexpr bool kDefer = Defer;
+                          IntersectPrim&& intersect) {
+    constexpr uint32_t kNoNode = 0xffffffffu, kLaneBits = kBvhWidth - 1;
     struct Entry {
-        uint32_t item;
+        uint32_t node;
         float tEntry;
     };
     Entry stack[kBvhStackSize];
     int top = 0;
     bool found = false;
-    uint32_t hitSlot = kNoItem, current = 0, pending = kNoItem;
-    float pendingEntry = 0.0f;   // where the ray enters the pending leaf's box
-    auto test = [&](auto& intersectPrim, uint32_t slot) {
-        if (!CostlyLeaves) return intersectPrim(slot, ray, hit);
-        const float tmax = ray.tmax;
-        // A tie goes to the lower slot: it may test up to the next float (tmax is positive and finite).
-        if (found && slot < hitSlot) ray.tmax = __builtin_bit_cast(float, __builtin_bit_cast(uint32_t, tmax) + 1u);
-        if (intersectPrim(slot, ray, hit)) {
-            hitSlot = slot;
-            return true;
-        }
-        ray.tmax = tmax;
-        return false;
-    };
-    // Pops the next subtree that may still hold something closer than ray.tmax into `current`, or the
-    // next deferred leaf into `pending` if it is free. Returns whether `current` was set.
-    auto popNext = [&] {
-        while (top > 0) {
-            const Entry e = stack[--top];
-            if (e.tEntry > ray.tmax) continue;
-            if (kDefer && (e.item & kLeafItem)) {
-                if (pending != kNoItem) {
-                    ++top;   // one deferred leaf at a time
-                    return false;
-                }
-                pending = e.item;
-                pendingEntry = e.tEntry;
-                continue;
-            }
-            current = e.item;
-            return true;
-        }
-        return false;
-    };
+    uint32_t current = 0;
     for (;;) {
-        if constexpr (kDefer) {
-            if (warpAll(pending != kNoItem)) {
-                // A hit found since the leaf was deferred may have put it out of reach.
-                if (pendingEntry <= ray.tmax && test(intersectCostly, pending & ~kLeafItem)) {
-                    found = true;
-                    if (anyHit) return true;
-                }
-                pending = kNoItem;
-            }
-        }
-        if (kDefer && current == kNoItem && !popNext()) {
-            if (pending == kNoItem) return found;
-            continue;   // nothing to do but the deferred leaf: wait for the warp
-        }
         const BvhNode& node = nodes[current];
         float tEntry[kBvhWidth];
         const unsigned hitMask = intersectLanes(node, r, ray.tmin, ray.tmax, tEntry);
-        // The node's children and leaf sizes, read at once and picked by selects: a loop that is not
-        // unrolled would read them from memory lane by lane, each load's latency on the way.
-        static_assert(kBvhWidth == 4, "at, sortFour and the lists below take four lanes");
-        const uint32_t child[kBvhWidth] = {node.child[0], node.child[1], node.child[2], node.child[3]};
-        const uint32_t count[kBvhWidth] = {node.primCount[0], node.primCount[1], node.primCount[2], node.primCount[3]};
-        auto at = [](const uint32_t(&value)[kBvhWidth], uint32_t lane) {
-            return lane & 2u ? (lane & 1u ? value[3] : value[2]) : (lane & 1u ? value[1] : value[0]);
-        };
-        unsigned leaves = 0, costly = 0;
         for (int l = 0; l < kBvhWidth; ++l) {
-            leaves |= (count[l] != 0 ? 1u : 0u) << l;
-            costly |= (count[l] & kBvhCostlyLeaf ? 1u : 0u) << l;
-        }
-        leaves &= hitMask;
-        costly = kDefer ? costly & leaves : 0u;
-        leaves &= ~costly;
-#if URBIS_GPU_CODE
-#pragma unroll(CostlyLeaves ? 1 : kBvhWidth)   // one copy of the primitive test beside the deferred one
-#endif
-        for (int l = 0; l < kBvhWidth; ++l) {
-            if (!(leaves >> l & 1u)) continue;
-            const uint32_t first = at(child, uint32_t(l)), size = at(count, uint32_t(l));
-            const bool costlyNow = !kDefer && CostlyLeaves && (size & kBvhCostlyLeaf);
-            for (uint32_t i = 0; i < (size & ~kBvhCostlyLeaf); ++i) {
-                if (costlyNow ? test(intersectCostly, first + i) : test(intersect, first + i)) {
+            if (!(hitMask >> l & 1u)) continue;
+            for (uint32_t i = 0; i < node.primCount[l]; ++i) {
+                if (intersect(node.child[l] + i, ray, hit)) {
                     found = true;
                     if (anyHit) return true;
                 }
             }
         }
-        // Interior children (and deferred leaves) still in reach, visited nearest first: the nearest
-        // interior child next if nothing deferred is nearer, the others pushed farthest first. The
-        // nearest deferred leaf is held at once if no other is.
+        // Interior children still in reach, the nearest next and the others pushed farthest first, each
+        // placed by its rank among keys of (entry distance, lane): a non-negative float's bits order as
+        // the float, the lane takes the two lowest (and the stored distance loses them: it only culls,
+        // so a few ulps less is safe).
         unsigned inner = 0;
-        for (int l = 0; l < kBvhWidth; ++l) {
-            const bool inReach = hitMask >> l & 1u && tEntry[l] <= ray.tmax;
-            inner |= (inReach && count[l] == 0 ? 1u : 0u) << l;
-            costly &= ~((inReach ? 0u : 1u) << l);
-        }
-        if (kDefer && costly != 0 && pending == kNoItem) {
-            int nearest = -1;
-            for (int l = 0; l < kBvhWidth; ++l)
-                if (costly >> l & 1u && (nearest < 0 || tEntry[l] < tEntry[nearest])) nearest = l;
-            pending = kLeafItem | at(child, uint32_t(nearest));
-            pendingEntry = tEntry[nearest];
-            costly &= ~(1u << nearest);
-        }
-        // Ordered by keys of (entry distance, lane): a non-negative float's bits order as the float,
-        // the lane takes the two lowest (and the stored distance loses them: it only culls, so a few
-        // ulps less is safe).
-        const unsigned queued = inner | costly;
-        uint32_t key[kBvhWidth];
-        for (int l = 0; l < kBvhWidth; ++l)
-            key[l] = queued >> l & 1u ? (__builtin_bit_cast(uint32_t, tEntry[l]) & ~kLaneBits) | uint32_t(l) : ~0u;
-        current = kNoItem;
-#if URBIS_GPU_CODE
-        // A sorting network, then the keys pushed in order; a lane's child by selects (`at`). 3-7 %
-        // faster on the H200 than ranks (docs/gpu_notes.md § Traversal step).
-        sortFour(key);
-        for (int i = kBvhWidth - 1; i >= 0; --i) {
-            if (key[i] == ~0u) continue;
-            const uint32_t lane = key[i] & kLaneBits;
-            const bool interior = inner >> lane & 1u;
-            if (i == 0 && interior) current = at(child, lane);
-            else stack[top++] = {at(child, lane) | (interior ? 0u : kLeafItem), __builtin_bit_cast(float, key[i] & ~kLaneBits)};
-        }
-#else
-        // Each lane's place is its rank among the keys, written straight to the stack: the same
-        // entries in the same places as the GPU's network, 7 % faster on the CPU (one thread).
         int queuedCount = 0;
-        for (int l = 0; l < kBvhWidth; ++l) queuedCount += int(queued >> l & 1u);
+        uint32_t key[kBvhWidth];
         for (int l = 0; l < kBvhWidth; ++l) {
-            if (!(queued >> l & 1u)) continue;
+            const bool inReach = hitMask >> l & 1u && tEntry[l] <= ray.tmax && node.primCount[l] == 0;
+            inner |= (inReach ? 1u : 0u) << l;
+            queuedCount += inReach ? 1 : 0;
+            key[l] = inReach ? (__builtin_bit_cast(uint32_t, tEntry[l]) & ~kLaneBits) | uint32_t(l) : ~0u;
+        }
+        current = kNoNode;
+        for (int l = 0; l < kBvhWidth; ++l) {
+            if (!(inner >> l & 1u)) continue;
             int rank = 0;
             for (int m = 0; m < kBvhWidth; ++m) rank += int(key[m] < key[l]);
-            const bool interior = inner >> l & 1u;
-            if (rank == 0 && interior) current = child[l];
-            else stack[top + queuedCount - 1 - rank] = {child[l] | (interior ? 0u : kLeafItem),
-                                                  __builtin_bit_cast(float, key[l] & ~kLaneBits)};
+            if (rank == 0) current = node.child[l];
+            else stack[top + queuedCount - 1 - rank] = {node.child[l], __builtin_bit_cast(float, key[l] & ~kLaneBits)};
         }
-        top += queuedCount - (current != kNoItem ? 1 : 0);
-#endif
-        if (!kDefer && current == kNoItem && !popNext()) return found;
+        top += queuedCount - (current != kNoNode ? 1 : 0);
+        while (current == kNoNode && top > 0) {
+            const Entry e = stack[--top];
+            if (e.tEntry <= ray.tmax) current = e.node;
+        }
+        if (current == kNoNode) return found;
     }
-}
-
-/// traverseBvh without costly leaves: every primitive goes to `intersect`.
-template <typename HitRecord, typename IntersectPrim>
-URBIS_HD bool traverseBvh(const BvhNode* nodes, const BvhRay& r, Ray& ray, HitRecord& hit, bool anyHit,
-                          IntersectPrim&& intersect) {
-    return traverseBvh<false>(nodes, r, ray, hit, anyHit, intersect, intersect);
 }
 
 } // namespace urbis

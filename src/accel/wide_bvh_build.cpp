@@ -91,6 +91,31 @@ WideBvh buildWideBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOpti
     return wide;
 }
 
+void attachLeavesAtRoot(WideBvh& bvh, const std::vector<uint32_t>& prims, const std::vector<Bounds3f>& bounds) {
+    for (size_t first = 0; first < prims.size(); first += kWideBvhWidth - 1) {
+        Bounds3f old;
+        for (int l = 0; l < kWideBvhWidth; ++l) old.extend(decodedBox(bvh.nodes[0], l));
+        WideBvhNode root = emptyNode();
+        Bounds3f boxes[kWideBvhWidth];
+        int count = 0;
+        if (!old.empty()) {
+            for (WideBvhNode& node : bvh.nodes) ++node.childBase;
+            root.innerMask = 1;
+            root.childBase = 1;
+            boxes[count++] = old;
+        }
+        root.primBase = uint32_t(bvh.primOrder.size());
+        for (size_t i = first; i < std::min(prims.size(), first + kWideBvhWidth - 1); ++i) {
+            root.leafInfo[count] = 1;
+            boxes[count++] = bounds[i];
+            bvh.primOrder.push_back(prims[i]);
+        }
+        quantise(root, boxes, count);
+        if (old.empty()) bvh.nodes[0] = root;
+        else bvh.nodes.insert(bvh.nodes.begin(), root);
+    }
+}
+
 Bounds3f decodedBox(const WideBvhNode& node, int lane) {
     Bounds3f box;
     if (!(node.innerMask >> lane & 1u) && node.leafSize(lane) == 0) return box;

@@ -28,6 +28,13 @@ struct WideBvh {
 WideBvh buildWideBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options = {},
                      const std::vector<uint32_t>& primCosts = {});
 
+/// Hangs primitives `prims` (of world bounds `bounds`) from new roots above the tree, each a leaf of its
+/// own at positions primOrder.size() on: a new root holds the old one as its interior child (every
+/// node then moves up by one) and up to kWideBvhWidth - 1 of them. For primitives far larger than the
+/// rest (the ground): built into the tree, their boxes would widen every node above their leaves,
+/// which every ray would then visit.
+void attachLeavesAtRoot(WideBvh& bvh, const std::vector<uint32_t>& prims, const std::vector<Bounds3f>& bounds);
+
 /// The world box that lane `lane` of `node` decodes to (empty for an unused lane).
 Bounds3f decodedBox(const WideBvhNode& node, int lane);
 

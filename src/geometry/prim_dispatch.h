@@ -19,7 +19,7 @@
 
 namespace urbis {
 
-/// Which kinds a dispatch may meet: a BVH leaf's bit kBvhCostlyLeaf says which of the two it is.
+/// Which kinds a dispatch may meet: a BVH leaf's bit kWideCostlyLeaf says which of the two it is.
 enum class KindFilter { Cheap, Costly, Any };
 
 template <KindFilter Filter, uint32_t I>

@@ -1,33 +1,51 @@
-// Closest-hit and shadow queries over every primitive kind of a scene (host+device): one BVH whose
+// Closest-hit and shadow queries over every primitive kind of a scene (host+device): one 8-wide BVH whose
 // leaves the kinds' intersectors test (prim_dispatch.h), so new kinds join without touching the
 // integrators.
 #pragma once
 
+#include "accel/wide_bvh_traverse.h"
 #include "geometry/prim_dispatch.h"
 
 namespace urbis {
 
+#if URBIS_HAVE_SSE
+using SceneLanes = WideLanesSse;
+#else
+using SceneLanes = WideLanesScalar;   // the GPU, and CPUs without SSE
+#endif
+
 /// The closest surface along `ray` within (tmin, tmax), or with anyHit (a shadow ray) the first
-/// one found: then only valid() means anything (blocked). Cheap kinds (triangles, the ground) are
-/// tested where the traversal meets them; costly ones (walls, each alone in a leaf marked
-/// kBvhCostlyLeaf) there too or, with Defer (the GPU's default), once every traversing lane of the
-/// warp holds one (traverseBvh). Both find the same hit. One function for both queries, so that the
-/// GPU path tracer inlines the traversal and the wall intersector once: two copies overflowed the
-/// GPU's instruction cache. A scene without costly leaves takes a traversal without their
-/// machinery, whose leaf loop unrolls: 30-35 % faster on stored triangles (H200); a scene runs one
-/// of the two, so only that one's code is fetched.
-template <bool Defer = URBIS_GPU_CODE>
+/// one found: then only valid() means anything (blocked). The scene's 8-wide BVH (traverseWideBvh)
+/// reaches each leaf position's kind-grouped slot through leafSlots. Cheap kinds (triangles, the
+/// ground) are tested where the traversal meets them; costly ones (walls, each alone in a leaf marked
+/// kWideCostlyLeaf) there too or, with Defer (the GPU's default), once every traversing lane of the
+/// warp holds one. Both find the same hit, and every Lanes the same hit bit for bit. One function for
+/// both queries, so that the GPU path tracer inlines the traversal and the wall intersector once: two
+/// copies overflowed the GPU's instruction cache. A scene without costly leaves takes a traversal
+/// without their machinery; a scene runs one of the two, so only that one's code is fetched.
+#if URBIS_HAVE_SSE
+/// traceScene without deferral, its lanes tested by WideLanesAvx2, in one function compiled for AVX2
+/// (scene_intersect_avx2.cpp): only where the view's isa (hostWideIsa) says the CPU has it.
+SurfaceHit traceSceneAvx2(const SceneView& scene, const Ray& ray, bool anyHit);
+#endif
+
+template <bool Defer = URBIS_GPU_CODE, typename Lanes = SceneLanes>
 URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyHit) {
+#if URBIS_HAVE_SSE
+    if constexpr (!Defer && std::is_same_v<Lanes, SceneLanes>)
+        if (scene.isa == WideIsa::Avx2) return traceSceneAvx2(scene, ray, anyHit);
+#endif
     const TraceRay tr(ray);
     PrimHit hit;
-    auto testCheap = [&](uint32_t slot, Ray& r, PrimHit& h) {
-        return intersectSlot<KindFilter::Cheap>(scene, tr, slot, r, h, anyHit);
+    auto testCheap = [&](uint32_t leaf, Ray& r, PrimHit& h) {
+        return intersectSlot<KindFilter::Cheap>(scene, tr, scene.leafSlots[leaf], r, h, anyHit);
     };
-    auto testCostly = [&](uint32_t slot, Ray& r, PrimHit& h) {
-        return intersectSlot<KindFilter::Costly>(scene, tr, slot, r, h, anyHit);
+    auto testCostly = [&](uint32_t leaf, Ray& r, PrimHit& h) {
+        return intersectSlot<KindFilter::Costly>(scene, tr, scene.leafSlots[leaf], r, h, anyHit);
     };
-    if (scene.costlyLeaves) traverseBvh<true, Defer>(scene.nodes.data, tr.bvh, ray, hit, anyHit, testCheap, testCostly);
-    else traverseBvh(scene.nodes.data, tr.bvh, ray, hit, anyHit, testCheap);
+    if (scene.costlyLeaves)
+        traverseWideBvh<Lanes, true, Defer>(scene.nodes.data, tr.bvh, ray, hit, anyHit, testCheap, testCostly);
+    else traverseWideBvh<Lanes>(scene.nodes.data, tr.bvh, ray, hit, anyHit, testCheap);
     if (!hit.valid()) return {};
     SurfaceHit out;
     if (anyHit) {

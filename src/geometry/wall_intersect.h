@@ -203,7 +203,7 @@ URBIS_HD inline bool intersectWallParapet(const WallRecord& wall, const TileRect
 /// cell with a hit: every part of a cell lies in the cell's column, so nothing later is closer.
 /// A tile walks the same cells of the same grid as its whole wall, minus those outside it, so the
 /// closest hit over a wall's tiles is the whole wall's. `anyHit` is a run-time flag (see
-/// traverseBvh); the template below fixes it at compile time. `invDirY` as for WallRay.
+/// traceScene); the template below fixes it at compile time. `invDirY` as for WallRay.
 URBIS_HD inline bool intersectWall(const WallRecord& wall, const Ray& ray, WallHit& hit, bool anyHit, float invDirY) {
     const WallRay r(wall, ray, invDirY);
     // The margins, the parapet and the cells' column each turn away the rays that miss them: a slab

@@ -21,7 +21,7 @@ struct GroundRecord {
     float x1 = kGroundHalfExtent, z1 = kGroundHalfExtent;
     uint32_t material = 0;
 
-    /// Cheap as a triangle; hung from the BVH's root (attachLeafAtRoot), since its box is the world's.
+    /// Cheap as a triangle; hung from the BVH's root (attachLeavesAtRoot), since its box is the world's.
     static constexpr uint32_t kBvhCost = 1;
     static constexpr bool kBvhAtRoot = true;
 

@@ -49,12 +49,12 @@ constexpr uint32_t primKindOf(std::integer_sequence<uint32_t, I...>) {
 template <typename Record>
 inline constexpr uint32_t kPrimKindOf = primKindOf<Record>(std::make_integer_sequence<uint32_t, kPrimKindCount>{});
 
-/// Whether kind `I`'s leaves are costly (kBvhCostlyLeaf: each primitive alone, tested deferred on the GPU).
+/// Whether kind `I`'s leaves are costly (kWideCostlyLeaf: each primitive alone, tested deferred on the GPU).
 template <uint32_t I>
 inline constexpr bool kCostlyKind = PrimRecord<I>::kBvhCost > 1;
 
 /// Whether kind `I` hangs from the BVH's root rather than being built into the tree: a record that
-/// says so (the ground: see attachLeafAtRoot).
+/// says so (the ground: see attachLeavesAtRoot).
 template <uint32_t I>
 inline constexpr bool kKindAtBvhRoot = [] {
     if constexpr (requires { PrimRecord<I>::kBvhAtRoot; }) return PrimRecord<I>::kBvhAtRoot;

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include "accel/split_references.h"
+#include "accel/wide_bvh_build.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -121,40 +122,29 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
             }
         }
     });
-    BvhBuildOptions options;
     std::vector<uint32_t> rootIds;
+    std::vector<Bounds3f> rootBounds;
     for (uint32_t prim = 0; prim < total; ++prim)
-        if (firstRef[prim + 1] == firstRef[prim]) rootIds.push_back(prim);
+        if (firstRef[prim + 1] == firstRef[prim]) {
+            rootIds.push_back(prim);
+            rootBounds.push_back(boundsOf(prim));
+        }
     std::vector<uint32_t>().swap(firstRef);
-    options.freeRootLanes = uint32_t(std::min<size_t>(rootIds.size(), kBvhWidth - 2));
-    Bvh bvh = buildBvh(treeBounds, options, treeCosts);
+    WideBvh bvh = buildWideBvh(treeBounds, BvhBuildOptions{}, treeCosts);
     std::vector<Bounds3f>().swap(treeBounds);
     std::vector<uint32_t>().swap(treeCosts);
     for (uint32_t& prim : bvh.primOrder) prim = treeIds[prim];
     std::vector<uint32_t>().swap(treeIds);
-    for (uint32_t prim : rootIds) attachLeafAtRoot(bvh, prim, boundsOf(prim));
+    attachLeavesAtRoot(bvh, rootIds, rootBounds);
 
-    // Leaves in node order take the next slots of their kind, and each kind's records are stored in
-    // that order, a split triangle once per reference: slot s of kind k is record s - kindStart(k).
-    // A kind's slots start after every reference of the kinds before it (split triangles have several).
+    // Each kind's records are stored in leaf order, a split triangle once per reference: the leaves'
+    // positions take the next slots of their kind (leafSlots), and slot s of kind k is record
+    // s - kindStart(k). A kind's slots start after every reference of the kinds before it.
     uint32_t refs[kPrimKindCount] = {}, next[kPrimKindCount], kindStart[kPrimKindCount];
     for (uint32_t prim : bvh.primOrder) ++refs[kindOf(prim)];
     for (uint32_t k = 0, start = 0; k < kPrimKindCount; start += refs[k++]) next[k] = kindStart[k] = start;
-    // slot[i]: where the primitive at primOrder[i] is stored, among all kinds' slots.
     std::vector<uint32_t> slot(bvh.primOrder.size());
-    for (BvhNode& node : bvh.nodes)
-        for (int l = 0; l < kBvhWidth; ++l) {
-            const uint32_t size = node.leafSize(l);
-            if (size == 0) continue;
-            const uint32_t kind = kindOf(bvh.primOrder[node.child[l]]);
-            for (uint32_t i = 0; i < size; ++i) {
-                if (kindOf(bvh.primOrder[node.child[l] + i]) != kind)
-                    throw std::logic_error("scene: a BVH leaf holds primitives of two kinds");
-                slot[node.child[l] + i] = next[kind] + i;
-            }
-            node.child[l] = next[kind];
-            next[kind] += size;
-        }
+    for (size_t i = 0; i < slot.size(); ++i) slot[i] = next[kindOf(bvh.primOrder[i])]++;
     Scene scene;
     forEachPrimKind([&](auto k) {
         using Record = typename decltype(k)::Record;
@@ -174,6 +164,7 @@ Scene Scene::build(const TriangleMesh& mesh, std::vector<Material> materials, co
         }
     });
     scene.nodes = std::move(bvh.nodes);
+    scene.leafSlots = std::move(slot);
     scene.materials = std::move(materials);
     scene.terrainData = terrain.data;
     return scene;

@@ -3,7 +3,7 @@
 // SceneMemory (bytes), and their forEach; so a new array is one line here.
 #pragma once
 
-#include "accel/bvh_node.h"
+#include "accel/wide_bvh_node.h"
 #include "scene/cloud_layer.h"
 #include "scene/light_records.h"
 #include "scene/material.h"
@@ -14,7 +14,8 @@
 
 // X(Type, member, "stats key"): in leaf order where the BVH's leaves reach them.
 #define URBIS_SCENE_ARRAYS(X)                          \
-    X(BvhNode, nodes, "bvh")                           \
+    X(WideBvhNode, nodes, "bvh")                       \
+    X(uint32_t, leafSlots, "leaf_slots")               \
     X(Triangle, triangles, "triangles")                \
     X(TriangleInfo, triangleInfo, "triangle_info")     \
     X(WallRecord, walls, "walls")                      \

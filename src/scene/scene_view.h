@@ -2,6 +2,7 @@
 // value; the same on both backends.
 #pragma once
 
+#include "accel/wide_isa.h"
 #include "scene/scene_arrays.h"
 #include "scene/night_sky.h"
 #include "scene/photon_view.h"
@@ -19,8 +20,10 @@ struct SceneView {
     /// The BVH's leaf slots of kind I are [kindEnd[I - 1], kindEnd[I]) (from 0 for kind 0): slot s
     /// is record s - kindEnd[I - 1] of the kind's array.
     uint32_t kindEnd[kPrimKindCount] = {};
-    /// Whether any leaf is costly (kBvhCostlyLeaf): the traversal then takes the costly leaves' path.
+    /// Whether any leaf is costly (kWideCostlyLeaf): the traversal then takes the costly leaves' path.
     bool costlyLeaves = false;
+    /// The host's lane test of the BVH's nodes (hostWideIsa); each gives the same hits. The GPU's is scalar.
+    WideIsa isa = WideIsa::Scalar;
     /// The kinds and features the scene may hold (scene/scene_features.h): a clear bit says it holds
     /// none of that, so per-ray code skips it; a GPU render kernel sets its own constant superset.
     SceneFeatures features = kAllFeatures;
@@ -51,6 +54,7 @@ SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky, cons
         view.costlyLeaves |= kCostlyKind<kind.index> && count > 0;
         if (count > 0) view.features |= SceneFeatures(1) << kind.index;
     });
+    view.isa = hostWideIsa();
     if (arrays.cloudLayers.size() > 0) view.features |= kCloudsFeature;   // buildClouds keeps a layer only with coverage
     view.sun = sun;
     view.sky = sky;

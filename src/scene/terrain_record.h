@@ -41,7 +41,7 @@ struct TerrainRecord {
     float sandLevel = 2.0f, snowLevel = 1e9f, rockSlope = 0.35f;
     uint32_t seed = 7;          ///< of the material noise
 
-    /// Cheap as a triangle per BVH leaf; hung from the root (attachLeafAtRoot) as the ground is.
+    /// Cheap as a triangle per BVH leaf; hung from the root (attachLeavesAtRoot) as the ground is.
     static constexpr uint32_t kBvhCost = 1;
     static constexpr bool kBvhAtRoot = true;
 

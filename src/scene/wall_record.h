@@ -69,7 +69,7 @@ struct WallRecord {
     float parapetInner0 = 0, parapetInner1 = 0;
 
     /// Cost of testing one, in triangles, for the BVH's surface area heuristic: above one, so each
-    /// tile gets a leaf of its own, marked costly (kBvhCostlyLeaf), which the GPU tests deferred.
+    /// tile gets a leaf of its own, marked costly (kWideCostlyLeaf), which the GPU tests deferred.
     /// At a cost of 1 leaves held all of a small building's walls and every ray into the leaf tested
     /// each; 4, 8 and 16 measured equal on the generated city, 16 best on San Francisco.
     static constexpr uint32_t kBvhCost = 16;
