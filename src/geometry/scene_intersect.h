@@ -14,21 +14,21 @@ using SceneLanes = WideLanesSse;
 using SceneLanes = WideLanesScalar;   // the GPU, and CPUs without SSE
 #endif
 
-/// The closest surface along `ray` within (tmin, tmax), or with anyHit (a shadow ray) the first
-/// one found: then only valid() means anything (blocked). The scene's 8-wide BVH (traverseWideBvh)
-/// reaches each leaf position's kind-grouped slot through leafSlots. Cheap kinds (triangles, the
-/// ground) are tested where the traversal meets them; costly ones (walls, each alone in a leaf marked
-/// kWideCostlyLeaf) there too or, with Defer (the GPU's default), once every traversing lane of the
-/// warp holds one. Both find the same hit, and every Lanes the same hit bit for bit. One function for
-/// both queries, so that the GPU path tracer inlines the traversal and the wall intersector once: two
-/// copies overflowed the GPU's instruction cache. A scene without costly leaves takes a traversal
-/// without their machinery; a scene runs one of the two, so only that one's code is fetched.
 #if URBIS_HAVE_SSE
 /// traceScene without deferral, its lanes tested by WideLanesAvx2, in one function compiled for AVX2
 /// (scene_intersect_avx2.cpp): only where the view's isa (hostWideIsa) says the CPU has it.
 SurfaceHit traceSceneAvx2(const SceneView& scene, const Ray& ray, bool anyHit);
 #endif
 
+/// The closest surface along `ray` within (tmin, tmax), or with anyHit (a shadow ray) the first
+/// one found: then only valid() means anything (blocked). The scene's 8-wide BVH (traverseWideBvh)
+/// reaches each leaf position's kind-grouped slot through leafSlots. Cheap kinds (triangles, the
+/// ground) are tested where the traversal meets them; costly ones (walls, each alone in a leaf marked
+/// kWideCostlyLeaf) when they are the nearest item left or, with Defer (the GPU's default), once every
+/// traversing lane of the warp holds one. Both find the same hit, and every Lanes the same hit bit for
+/// bit. One function for both queries, so that the GPU path tracer inlines the traversal and the wall
+/// intersector once: two copies overflowed the GPU's instruction cache. A scene without costly leaves takes a traversal
+/// without their machinery; a scene runs one of the two, so only that one's code is fetched.
 template <bool Defer = URBIS_GPU_CODE, typename Lanes = SceneLanes>
 URBIS_HD inline SurfaceHit traceScene(const SceneView& scene, Ray ray, bool anyHit) {
 #if URBIS_HAVE_SSE
