@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <iostream>
 
 using namespace urbis;
@@ -252,4 +253,33 @@ TEST(Atmosphere, BuildLightsBuildsTheTablesItNeeds) {
     EXPECT_FLOAT_EQ(direct.sun.radiance.x, twoSteps.sun.radiance.x);
     EXPECT_EQ(direct.lightRecords.size(), twoSteps.lightRecords.size());
     EXPECT_GT(luminance(skyRadiance(direct.view(), Vec3f{0, 1, 0})), 0.0f);
+}
+
+// A sequence relights its scene each frame: a scene lit at noon and then relit for dusk keeps its
+// transmittance and multiple-scattering tables (they depend on the medium, not the sun) and ends with
+// the bits of a scene lit for dusk alone; another medium builds them again.
+TEST(Atmosphere, RelightingTheSameMediumKeepsTheSunFreeTables) {
+    const auto sameBits = [](const std::vector<Vec3f>& a, const std::vector<Vec3f>& b) {
+        return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3f)) == 0;
+    };
+    const Scene dusk = atmosphereScene(3.0f, 250.0f);
+    Scene relit = atmosphereScene(60.0f);
+    const Atmosphere noon = relit.sky.atmosphere;
+    const Vec3f* kept = relit.multiScatteringLut.data();
+    relit.sun = makeSun(3.0f, 250.0f, 0.27f, Vec3f{3, 3, 3});
+    buildAtmosphere(relit, true, &noon);
+    EXPECT_EQ(relit.multiScatteringLut.data(), kept) << "the multiple-scattering table was built again";
+    EXPECT_TRUE(sameBits(relit.transmittanceLut, dusk.transmittanceLut));
+    EXPECT_TRUE(sameBits(relit.multiScatteringLut, dusk.multiScatteringLut));
+    EXPECT_TRUE(sameBits(relit.skyViewLut, dusk.skyViewLut));
+    EXPECT_EQ(std::memcmp(&relit.sun, &dusk.sun, sizeof(Sun)), 0) << "the sun's transmittance differs";
+
+    Scene hazy = atmosphereScene(60.0f);
+    const Atmosphere clear = hazy.sky.atmosphere;
+    hazy.sky.atmosphere.mieScattering *= 4.0f;
+    hazy.sun = makeSun(3.0f, 250.0f, 0.27f, Vec3f{3, 3, 3});
+    buildAtmosphere(hazy, true, &clear);
+    EXPECT_FALSE(sameMedium(clear, hazy.sky.atmosphere));
+    EXPECT_FALSE(sameBits(hazy.transmittanceLut, dusk.transmittanceLut)) << "another medium kept the old tables";
+    EXPECT_TRUE(sameMedium(noon, dusk.sky.atmosphere));
 }

@@ -41,6 +41,40 @@ TEST(ClusterTiles, SizeLeavesEveryRankSeveralTiles) {
     EXPECT_EQ(tileSizeFor(150, 90, 2, kGpuTileSide), 32u);        // 64: 6 tiles, 32: 15
 }
 
+// The bands of GPU streams: whole rows, one after the other down the frame, on the render kernel's
+// 16-row blocks, no smaller than 16 rows but at the frame's edge, shrinking (guided self-scheduling).
+TEST(ClusterTiles, GpuBandsCoverTheFrameInShrinkingRunsOfWholeBlocks) {
+    for (auto [w, h, streams] : {std::tuple{1920u, 1080u, 8}, {3840u, 2160u, 32}, {150u, 90u, 8}, {7u, 5u, 4}, {64u, 16u, 1}}) {
+        const std::vector<PixelRect> bands = bandsOf(w, h, streams);
+        ASSERT_FALSE(bands.empty());
+        uint32_t y = 0;
+        for (size_t i = 0; i < bands.size(); ++i) {
+            const PixelRect& b = bands[i];
+            EXPECT_EQ(b.x0, 0u);
+            EXPECT_EQ(b.x1, w);
+            EXPECT_EQ(b.y0, y) << "band " << i << " does not follow the one before";
+            EXPECT_EQ(b.y0 % 16, 0u) << "band " << i << " starts inside a block";
+            if (b.y1 < h) {
+                EXPECT_GE(b.height(), 16u);
+            }
+            if (i > 0) {
+                EXPECT_LE(b.height(), bands[i - 1].height()) << "band " << i << " grew";
+            }
+            y = b.y1;
+        }
+        EXPECT_EQ(y, h) << w << "x" << h;
+    }
+    // 1080 rows over 8 streams: 1080 / 8 = 135 -> 128 rows first, 16 at the end.
+    const std::vector<PixelRect> bands = bandsOf(1920, 1080, 8);
+    EXPECT_EQ(bands.front().height(), 128u);
+    EXPECT_EQ(bands[1].height(), 112u);   // 952 / 8 = 119 -> 112
+    EXPECT_EQ(bands.size(), 28u);
+    EXPECT_EQ(bands.back().height(), 8u);   // 1080 = 67 x 16 + 8
+    EXPECT_TRUE(bandsOf(0, 10, 4).empty());
+    EXPECT_TRUE(bandsOf(10, 0, 4).empty());
+    EXPECT_THROW(bandsOf(10, 10, 0), std::invalid_argument);
+}
+
 TEST(ClusterFrames, EachFrameOnceOverTheRanks) {
     std::vector<uint32_t> frames(23);
     std::iota(frames.begin(), frames.end(), uint32_t(100));

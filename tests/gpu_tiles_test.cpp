@@ -1,6 +1,7 @@
 // The GPU renders a frame in tiles (MPI ranks, several devices) and keeps one upload for a sequence:
-// tiles give the whole frame's pixels bit for bit, a relit scene renders as a fresh upload of it, and
-// `--devices 0,0` (two GpuScenes on one GPU, two host threads) writes the image of `--device cuda`.
+// tiles on several streams give the whole frame's pixels bit for bit, a relit scene renders as a fresh
+// upload of it, and `--devices 0,0` (two GpuScenes on one GPU, their streams at once) writes the image
+// of `--device cuda`.
 #include "gpu_test_support.h"
 #include "cli_support.h"
 #include "film_test_support.h"
@@ -9,6 +10,8 @@
 #include "citygen/city_scene.h"
 #include "citygen/window_schedule.h"
 #include "cluster/tile_grid.h"
+#include "cluster/tile_queue.h"
+#include "cluster/tile_workers.h"
 #include "description/scene_lighting.h"
 #include "lights/light_build.h"
 #include "media/atmosphere_build.h"
@@ -16,6 +19,7 @@
 #include "scene/camera_framing.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstring>
 #include <fstream>
@@ -69,24 +73,30 @@ TEST(GpuTiles, TilesGiveTheWholeFramesPixelsBitForBit) {
     std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
     const Film whole = wholeFrame(*gpu, camera, settings, true);
 
+    // Three streams of the one device, a host thread each, taking tiles from one queue in reverse
+    // order (any order and any stream: the bits are the pixel's).
     Film tiled(settings.width, settings.height, true);
     gpu->setFilm(tiled);
-    uint64_t rays = 0;
-    const auto start = std::chrono::steady_clock::now();
+    std::vector<GpuTileStream> streams;
+    for (int s = 0; s < 3; ++s) streams.emplace_back(*gpu);
     const std::vector<PixelRect> tiles = tilesOf(settings.width, settings.height, 32);
-    for (auto it = tiles.rbegin(); it != tiles.rend(); ++it) {   // any order: the bits are the pixel's
-        RenderCounters counters;
-        gpu->render(camera, settings, {0, settings.spp}, *it, counters);
-        gpu->readFilm(*it, tiled);
-        rays += counters.rays;
-    }
-    std::printf("%zu tiles of 32 px: %.2f ms, %llu rays\n", tiles.size(),
+    TileQueue queue(tiles.size());
+    std::atomic<uint64_t> rays{0};
+    std::vector<size_t> tilesByStream(streams.size(), 0);
+    const auto start = std::chrono::steady_clock::now();
+    runOnWorkerThreads(streams.size(), [&](size_t s) {
+        for (int32_t i; (i = queue.take()) >= 0; ++tilesByStream[s])
+            rays += streams[s].renderTile(camera, settings, {0, settings.spp}, tiles[tiles.size() - 1 - size_t(i)], tiled);
+    });
+    std::printf("%zu tiles of 32 px on 3 streams (%zu, %zu, %zu): %.2f ms, %llu rays\n", tiles.size(), tilesByStream[0],
+                tilesByStream[1], tilesByStream[2],
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
                 (unsigned long long)rays);
     expectSameFilmBits(whole, tiled);
     EXPECT_GT(rays, size_t(settings.width) * settings.height * settings.spp);
-    RenderCounters outside;
-    EXPECT_THROW(gpu->render(camera, settings, {0, 1}, PixelRect{0, 0, 151, 10}, outside), std::invalid_argument);
+    EXPECT_THROW(streams[0].renderTile(camera, settings, {0, 1}, PixelRect{0, 0, 151, 10}, tiled), std::invalid_argument);
+    Film otherSize(settings.width, settings.height + 1, true);
+    EXPECT_THROW(streams[0].renderTile(camera, settings, {0, 1}, PixelRect{0, 0, 8, 8}, otherSize), std::invalid_argument);
 }
 
 TEST(GpuTiles, RelitSceneRendersAsAFreshUploadOfIt) {

@@ -91,14 +91,15 @@ void RenderBackend::renderOnGpus(const Camera& camera, const RenderSettings& set
     } else {
         if (settings.integrator != IntegratorKind::Path)
             throw InputError("over several GPUs only the path integrator renders (--integrator path)", FailureKind::Usage);
-        std::vector<GpuTileRenderer> renderers;
+        std::vector<std::unique_ptr<GpuTileRenderer>> renderers;
         std::vector<TileRenderer*> workers;
-        for (const std::unique_ptr<GpuScene>& gpu : gpus_) renderers.emplace_back(*gpu, camera, settings, samples);
-        for (GpuTileRenderer& renderer : renderers) workers.push_back(&renderer);
+        for (const std::unique_ptr<GpuScene>& gpu : gpus_)
+            for (int s = 0; s < kGpuStreamsPerDevice; ++s) {
+                renderers.push_back(std::make_unique<GpuTileRenderer>(*gpu, camera, settings, samples, s == 0));
+                workers.push_back(renderers.back().get());
+            }
         const auto start = std::chrono::steady_clock::now();
-        const int devices = int(gpus_.size());
-        const TileShare share = renderTilesOnWorkers(
-            workers, tilesOf(film.width, film.height, tileSizeFor(film.width, film.height, devices, kGpuTileSide)), film);
+        const TileShare share = renderTilesOnWorkers(workers, bandsOf(film.width, film.height, int(workers.size())), film);
         counters.seconds = secondsSince(start);
         counters.rays = share.rays;
         if (denoise) first.setFilm(film);   // the gathered film, for the first GPU to denoise

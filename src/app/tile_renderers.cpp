@@ -11,10 +11,7 @@ uint64_t CpuTileRenderer::renderTile(const PixelRect& tile, Film& film) {
 }
 
 uint64_t GpuTileRenderer::renderTile(const PixelRect& tile, Film& film) {
-    RenderCounters counters;
-    gpu_.render(camera_, settings_, samples_, tile, counters);
-    gpu_.readFilm(tile, film);
-    return counters.rays;
+    return stream_.renderTile(camera_, settings_, samples_, tile, film);
 }
 
 } // namespace urbis

@@ -25,20 +25,27 @@ private:
     SampleRange samples_;
 };
 
-/// Tiles on one GPU: startFrame makes the device film (once a frame, not a tile), each tile is one
-/// launch of the render kernels over its pixels, then a copy of those pixels back to the host film.
+/// Tiles on one GPU, on a CUDA stream of this renderer's own (GpuTileStream): several renderers of one
+/// device, one host thread each, render its tiles at once. The device's first renderer (`makesFilm`)
+/// makes the device film in startFrame, once a frame; each tile is one launch of the render kernels
+/// over its pixels, then a copy of those pixels back to the host film.
 class GpuTileRenderer final : public TileRenderer {
 public:
-    GpuTileRenderer(GpuScene& gpu, const Camera& camera, const RenderSettings& settings, SampleRange samples)
-        : gpu_(gpu), camera_(camera), settings_(settings), samples_(samples) {}
-    void startFrame(const Film& film) override { gpu_.setFilm(film); }
+    GpuTileRenderer(GpuScene& gpu, const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                    bool makesFilm = true)
+        : gpu_(gpu), stream_(gpu), camera_(camera), settings_(settings), samples_(samples), makesFilm_(makesFilm) {}
+    void startFrame(const Film& film) override {
+        if (makesFilm_) gpu_.setFilm(film);
+    }
     uint64_t renderTile(const PixelRect& tile, Film& film) override;
 
 private:
     GpuScene& gpu_;
+    GpuTileStream stream_;
     Camera camera_;
     RenderSettings settings_;
     SampleRange samples_;
+    bool makesFilm_;
 };
 
 } // namespace urbis

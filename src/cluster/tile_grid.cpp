@@ -21,4 +21,17 @@ uint32_t tileSizeFor(uint32_t width, uint32_t height, int workers, uint32_t larg
     return size;
 }
 
+std::vector<PixelRect> bandsOf(uint32_t width, uint32_t height, int streams) {
+    if (streams < 1) throw std::invalid_argument("bandsOf: no streams");
+    constexpr uint32_t kBlockRows = 16;
+    std::vector<PixelRect> bands;
+    if (width == 0) return bands;
+    for (uint32_t y = 0; y < height;) {
+        const uint32_t rows = std::max(kBlockRows, (height - y) / uint32_t(streams) / kBlockRows * kBlockRows);
+        bands.push_back({0, y, width, std::min(height, y + rows)});
+        y = bands.back().y1;
+    }
+    return bands;
+}
+
 } // namespace urbis

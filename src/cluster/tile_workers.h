@@ -1,5 +1,6 @@
-// One frame over the devices of one process: a host thread per device, all taking tiles from one
-// queue and leaving their pixels in one film (`urbis render --devices`, docs/multi_gpu.md).
+// One frame over the devices of one process: a host thread per worker (each of a GPU's streams), all
+// taking tiles from one queue and leaving their pixels in one film (`urbis render --devices`,
+// docs/multi_gpu.md).
 #pragma once
 
 #include "cluster/tile_queue.h"
@@ -13,7 +14,7 @@
 
 namespace urbis {
 
-/// Runs `work(w)` for w = 0..workers-1, each on a host thread of its own (one per device), and returns
+/// Runs `work(w)` for w = 0..workers-1, each on a host thread of its own (one per worker), and returns
 /// when all have; a failure (an exception) of any is rethrown then.
 void runOnWorkerThreads(size_t workers, const std::function<void(size_t)>& work);
 

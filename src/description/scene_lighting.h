@@ -15,7 +15,9 @@ namespace urbis {
 
 /// Sets the sun, the moon and the stars of `d` (celestialLightsOf, seen from the city at `origin`),
 /// its sky and the atmosphere's tables for that sun, and builds the light list, over a scene whose
-/// geometry and clouds are set. The same description gives the same scene whatever it held before.
+/// geometry and clouds are set. The same description gives the same scene whatever it held before
+/// (the atmosphere's sun-free tables of an earlier lightScene are kept where the medium is the same:
+/// they have the bits a fresh build gives).
 void lightScene(Scene& scene, const SceneDescription& d, const GeoOrigin& origin);
 
 /// Sets each procedural wall's chance of lit rooms and lit shop windows for `hour` (local clock) by

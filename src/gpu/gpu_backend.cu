@@ -9,6 +9,7 @@
 #include "gpu/device_event_timer.h"
 #include "gpu/device_scene.h"
 #include "gpu/gpu_photons.h"
+#include "gpu/pinned_buffer.h"
 #include "gpu/render_variants.h"
 #include "integrators/aov_sample.h"
 #include "integrators/path_samples.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -62,9 +64,11 @@ __global__ void __launch_bounds__(kTileX * kTileY, kRenderBlocksPerSm<renderVari
 template <uint32_t... V>
 void launchRenderVariant(uint32_t variant, std::integer_sequence<uint32_t, V...>, dim3 grid, dim3 block,
                          const SceneView& scene, const Camera& camera, const RenderSettings& settings,
-                         SampleRange samples, const PixelRect& tile, const FilmView& film, unsigned long long* rayCount) {
+                         SampleRange samples, const PixelRect& tile, const FilmView& film, unsigned long long* rayCount,
+                         cudaStream_t stream) {
     (void)((variant == V &&
-            (renderKernel<kRenderVariants[V]><<<grid, block>>>(scene, camera, settings, samples, tile, film, rayCount),
+            (renderKernel<kRenderVariants[V]><<<grid, block, 0, stream>>>(scene, camera, settings, samples, tile, film,
+                                                                          rayCount),
              true)) ||
            ...);
 }
@@ -231,11 +235,12 @@ struct GpuScene::Impl {
     /// integrator's camera pass sees of its photon pass.
     void launchRender(const Camera& camera, const RenderSettings& settings, SampleRange samples,
                       const PhotonsView& photons = {}) {
-        launchRender(camera, settings, samples, PixelRect{0, 0, settings.width, settings.height}, photons);
+        launchRender(camera, settings, samples, PixelRect{0, 0, settings.width, settings.height}, rayCount.data(), nullptr,
+                     photons);
     }
-    /// launchRender of the pixels of `tile` only.
+    /// launchRender of the pixels of `tile` only, on `stream`, counting rays into `rayCounter`.
     void launchRender(const Camera& camera, const RenderSettings& settings, SampleRange samples, const PixelRect& tile,
-                      const PhotonsView& photons = {}) {
+                      unsigned long long* rayCounter, cudaStream_t stream, const PhotonsView& photons = {}) {
         if (filmWidth != settings.width || filmHeight != settings.height)
             throw std::invalid_argument("GpuScene::render: the film's size is not the settings' image size");
         if (tile.x1 > filmWidth || tile.y1 > filmHeight || tile.x0 > tile.x1 || tile.y0 > tile.y1)
@@ -248,10 +253,10 @@ struct GpuScene::Impl {
         const FilmView target = filmView();
         const SceneFeatures features = view.features | (settings.integrator == IntegratorKind::Path ? 0 : kPhotonsFeature);
         launchRenderVariant(renderVariantFor(features), std::make_integer_sequence<uint32_t, kRenderVariantCount>{}, grid,
-                            block, view, camera, settings, samples, tile, target, rayCount.data());
+                            block, view, camera, settings, samples, tile, target, rayCounter, stream);
         checkLaunch("renderKernel");
         if (!target.hasAovs()) return;
-        aovKernel<<<grid, block>>>(view, camera, settings, samples, tile, target);
+        aovKernel<<<grid, block, 0, stream>>>(view, camera, settings, samples, tile, target);
         checkLaunch("aovKernel");
     }
 
@@ -312,21 +317,17 @@ void GpuScene::setFilm(const Film& host) {
     forEachFilmArray([](auto, bool, auto& device, const auto& array) { device.upload(array); }, m.film, host.arrays);
     m.filmWidth = host.width;
     m.filmHeight = host.height;
+    URBIS_CUDA_CHECK(cudaDeviceSynchronize());   // the copies done, for tiles on non-blocking streams too
 }
 
 void GpuScene::render(const Camera& camera, const RenderSettings& settings, SampleRange samples,
-                      RenderCounters& counters) {
-    render(camera, settings, samples, PixelRect{0, 0, settings.width, settings.height}, counters);
-}
-
-void GpuScene::render(const Camera& camera, const RenderSettings& settings, SampleRange samples, const PixelRect& tile,
                       RenderCounters& counters) {
     Impl& m = *impl_;
     m.use();
     URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
     EventTimer timer;
     timer.start();
-    m.launchRender(camera, settings, samples, tile);
+    m.launchRender(camera, settings, samples);
     counters.seconds = timer.stopMs() * 1e-3;
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());
     counters.rays = m.rayCount.download()[0];
@@ -368,22 +369,6 @@ void GpuScene::readFilm(Film& host) const {
     host.width = m.filmWidth;
     host.height = m.filmHeight;
     forEachFilmArray([](auto, bool, const auto& device, auto& array) { array = device.download(); }, m.film, host.arrays);
-}
-
-void GpuScene::readFilm(const PixelRect& tile, Film& host) const {
-    const Impl& m = *impl_;
-    m.use();
-    if (host.width != m.filmWidth || host.height != m.filmHeight || host.hasAovs() != (m.film.albedoSum.size() > 0))
-        throw std::invalid_argument("GpuScene::readFilm: the host film is not the device film's size and layers");
-    if (tile.x1 > m.filmWidth || tile.y1 > m.filmHeight || tile.pixels() == 0) return;
-    forEachFilmArray(
-        [&](auto, bool, const auto& device, auto& array) {
-            if (array.empty()) return;
-            const size_t pitch = size_t(m.filmWidth) * sizeof(array[0]), first = size_t(tile.y0) * m.filmWidth + tile.x0;
-            URBIS_CUDA_CHECK(cudaMemcpy2D(array.data() + first, pitch, device.data() + first, pitch,
-                                          tile.width() * sizeof(array[0]), tile.height(), cudaMemcpyDeviceToHost));
-        },
-        m.film, host.arrays);
 }
 
 void GpuScene::drawPicture(FilmDisplay display, float exposureEv, bool denoised, uint8_t* rgba) {
@@ -490,7 +475,8 @@ void GpuScene::renderPhotons(const Scene& host, const Camera& camera, const Rend
         URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
         EventTimer timer;
         timer.start();
-        m.launchRender(camera, settings, SampleRange{s, 1}, photons);
+        m.launchRender(camera, settings, SampleRange{s, 1}, PixelRect{0, 0, settings.width, settings.height},
+                       m.rayCount.data(), nullptr, photons);
         const double seconds = timer.stopMs() * 1e-3;
         timings.camera += seconds;
         counters.rays += m.rayCount.download()[0];
@@ -511,5 +497,72 @@ GpuMemory GpuScene::memory() const {
 }
 
 const GpuInfo& GpuScene::info() const { return impl_->info; }
+
+struct GpuTileStream::Impl {
+    GpuScene::Impl& gpu;
+    cudaStream_t stream = nullptr;
+    DeviceBuffer<unsigned long long> rayCount{1};
+    PinnedBuffer staging;   ///< the tile's ray count, then its pixels of every film array, one after the other
+
+    explicit Impl(GpuScene::Impl& scene) : gpu(scene) {
+        gpu.use();
+        // Non-blocking: the legacy stream's work (other threads' setFilm, say) does not hold this one's tiles.
+        URBIS_CUDA_CHECK(cudaStreamCreateWithFlags(&stream, cudaStreamNonBlocking));
+    }
+    ~Impl() {
+        if (cudaSetDevice(gpu.device) == cudaSuccess && stream) cudaStreamDestroy(stream);
+        cudaGetLastError();   // errors here are sticky ones already reported by the failing call
+    }
+};
+
+GpuTileStream::GpuTileStream(GpuScene& gpu) : impl_(std::make_unique<Impl>(*gpu.impl_)) {}
+GpuTileStream::~GpuTileStream() = default;
+GpuTileStream::GpuTileStream(GpuTileStream&&) noexcept = default;
+
+uint64_t GpuTileStream::renderTile(const Camera& camera, const RenderSettings& settings, SampleRange samples,
+                                   const PixelRect& tile, Film& host) {
+    Impl& s = *impl_;
+    GpuScene::Impl& m = s.gpu;
+    m.use();
+    if (host.width != m.filmWidth || host.height != m.filmHeight || host.hasAovs() != (m.film.albedoSum.size() > 0))
+        throw std::invalid_argument("GpuTileStream::renderTile: the host film is not the device film's size and layers");
+    URBIS_CUDA_CHECK(cudaMemsetAsync(s.rayCount.data(), 0, sizeof(unsigned long long), s.stream));
+    m.launchRender(camera, settings, samples, tile, s.rayCount.data(), s.stream);
+    if (tile.pixels() == 0) return 0;
+    // The device's copies go to the pinned staging, so that they queue on the stream behind the kernels
+    // and the host thread waits for this stream alone; then the host puts the rows in place.
+    size_t bytes = sizeof(unsigned long long);
+    forEachFilmArray([&](auto, bool, const auto&, const auto& array) { bytes += array.empty() ? 0 : tile.pixels() * sizeof(array[0]); },
+                     m.film, host.arrays);
+    s.staging.reserve(bytes);
+    URBIS_CUDA_CHECK(cudaMemcpyAsync(s.staging.data(), s.rayCount.data(), sizeof(unsigned long long), cudaMemcpyDeviceToHost,
+                                     s.stream));
+    const size_t first = size_t(tile.y0) * m.filmWidth + tile.x0;
+    size_t offset = sizeof(unsigned long long);
+    forEachFilmArray(
+        [&](auto, bool, const auto& device, const auto& array) {
+            if (array.empty()) return;
+            const size_t element = sizeof(array[0]), row = tile.width() * element;
+            URBIS_CUDA_CHECK(cudaMemcpy2DAsync(s.staging.data() + offset, row, device.data() + first, m.filmWidth * element,
+                                               row, tile.height(), cudaMemcpyDeviceToHost, s.stream));
+            offset += tile.pixels() * element;
+        },
+        m.film, host.arrays);
+    URBIS_CUDA_CHECK(cudaStreamSynchronize(s.stream));
+    offset = sizeof(unsigned long long);
+    forEachFilmArray(
+        [&](auto, bool, auto& array) {
+            if (array.empty()) return;
+            const size_t element = sizeof(array[0]), row = tile.width() * element;
+            for (uint32_t y = 0; y < tile.height(); ++y)
+                std::memcpy(reinterpret_cast<uint8_t*>(array.data() + first + size_t(y) * m.filmWidth),
+                            s.staging.data() + offset + y * row, row);
+            offset += tile.pixels() * element;
+        },
+        host.arrays);
+    unsigned long long rays = 0;
+    std::memcpy(&rays, s.staging.data(), sizeof rays);
+    return rays;
+}
 
 } // namespace urbis

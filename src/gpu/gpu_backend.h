@@ -66,21 +66,15 @@ public:
     /// tracer's kernel, then the AOV pass's when the film keeps AOVs. The film must be
     /// settings.width x settings.height. counters.seconds is the kernels' time (CUDA events).
     void render(const Camera& camera, const RenderSettings& settings, SampleRange samples, RenderCounters& counters);
-    /// Adds samples `samples` of the pixels in `tile` only, as render does for every pixel: a pixel's
-    /// bits do not depend on the rectangles the frame is rendered in (the sampler is keyed by pixel).
-    void render(const Camera& camera, const RenderSettings& settings, SampleRange samples, const PixelRect& tile,
-                RenderCounters& counters);
     /// Uploads again what lightScene and relightWindows change of `scene` (the scene this GpuScene was
     /// uploaded from, relit for another time of day): the walls' lit windows, the light list, the sky's
     /// tables, the sun, sky and night records. The geometry and its BVH stay on the device as they are.
-    void relight(const Scene& scene);    /// Denoises the device film in place, as denoiseCpu does the host film (the same per-pixel
+    void relight(const Scene& scene);
+    /// Denoises the device film in place, as denoiseCpu does the host film (the same per-pixel
     /// passes of film/denoise_filter.h, one kernel each). The film must keep AOVs.
     void denoise(const DenoiseParams& params = {});
     /// Copies the device film into `film`.
     void readFilm(Film& film) const;
-    /// Copies the pixels of `tile` of every film array into the same rectangle of `film`, which has the
-    /// device film's size and layers (the rest of `film` is left as it is).
-    void readFilm(const PixelRect& tile, Film& film) const;
     /// Makes the 8-bit sRGB picture of the device film on the device (film/display_pixel.h: layer
     /// `display` at `exposureEv` stops), denoised first where `denoised` (the film's sums are kept, to
     /// go on adding samples), into `rgba`: device memory of width x height x 4 bytes, rows from the
@@ -117,7 +111,35 @@ public:
     struct Impl;
 
 private:
+    friend class GpuTileStream;
     explicit GpuScene(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+/// Renders tiles of a GpuScene's device film on a CUDA stream of its own, with its own ray counter.
+/// A 256-pixel tile is about one wave of blocks on an H200, so one launch at a time would leave SMs
+/// idle under each tile's slowest pixels; tiles on several streams of one device run at once, and the
+/// next tile's blocks take those SMs. Each stream is driven by one host thread at a time.
+class GpuTileStream {
+public:
+    explicit GpuTileStream(GpuScene& gpu);
+    ~GpuTileStream();
+    GpuTileStream(GpuTileStream&&) noexcept;
+    GpuTileStream(const GpuTileStream&) = delete;
+    GpuTileStream& operator=(const GpuTileStream&) = delete;
+    GpuTileStream& operator=(GpuTileStream&&) = delete;
+
+    /// Adds samples `samples` of the pixels of `tile` to the device film (GpuScene::setFilm's), as
+    /// GpuScene::render does for every pixel, then copies those pixels of every film array into the same
+    /// rectangle of `film` (the device film's size and layers; its other pixels left as they are).
+    /// Returns the rays traced. A pixel's bits do not depend on the tiles or streams the frame is
+    /// rendered in: the sampler is keyed by pixel.
+    uint64_t renderTile(const Camera& camera, const RenderSettings& settings, SampleRange samples, const PixelRect& tile,
+                        Film& film);
+
+    struct Impl;
+
+private:
     std::unique_ptr<Impl> impl_;
 };
 

@@ -28,11 +28,9 @@ GpuScene::~GpuScene() = default;
 std::unique_ptr<GpuScene> GpuScene::upload(const Scene&, size_t, int) { noCuda(); }
 void GpuScene::setFilm(const Film&) { noCuda(); }
 void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, RenderCounters&) { noCuda(); }
-void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, const PixelRect&, RenderCounters&) { noCuda(); }
 void GpuScene::relight(const Scene&) { noCuda(); }
 void GpuScene::denoise(const DenoiseParams&) { noCuda(); }
 void GpuScene::readFilm(Film&) const { noCuda(); }
-void GpuScene::readFilm(const PixelRect&, Film&) const { noCuda(); }
 void GpuScene::drawPicture(FilmDisplay, float, bool, uint8_t*) { noCuda(); }
 Rgb8Image GpuScene::readPicture() const { noCuda(); }
 LinearImage GpuScene::render(const Camera&, const RenderSettings&, RenderCounters&) { noCuda(); }
@@ -45,5 +43,11 @@ std::vector<float> GpuScene::timeTrace(const std::vector<Ray>&, bool, int, int) 
 std::vector<float> GpuScene::timeRender(const Camera&, const RenderSettings&, int, int) { noCuda(); }
 GpuMemory GpuScene::memory() const { return {}; }
 const GpuInfo& GpuScene::info() const { return impl_->info; }
+
+struct GpuTileStream::Impl {};
+GpuTileStream::GpuTileStream(GpuScene&) { noCuda(); }
+GpuTileStream::~GpuTileStream() = default;
+GpuTileStream::GpuTileStream(GpuTileStream&&) noexcept = default;
+uint64_t GpuTileStream::renderTile(const Camera&, const RenderSettings&, SampleRange, const PixelRect&, Film&) { noCuda(); }
 
 } // namespace urbis

@@ -4,6 +4,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <cstring>
+
 namespace urbis {
 
 namespace {
@@ -156,7 +158,14 @@ std::vector<Vec3f> buildSkyViewLut(const Atmosphere& a, const std::vector<Vec3f>
     return lut;
 }
 
-void buildAtmosphere(Scene& scene, bool multipleScattering) {
+bool sameMedium(const Atmosphere& a, const Atmosphere& b) {
+    Atmosphere sunOfB = a;
+    sunOfB.sunDirection = b.sunDirection;
+    sunOfB.solarIrradiance = b.solarIrradiance;
+    return std::memcmp(&sunOfB, &b, sizeof b) == 0;   // floats alone: no padding
+}
+
+void buildAtmosphere(Scene& scene, bool multipleScattering, const Atmosphere* tablesBuiltFor) {
     if (scene.sky.model != SkyModel::Atmosphere) {
         scene.transmittanceLut.clear();
         scene.multiScatteringLut.clear();
@@ -166,10 +175,14 @@ void buildAtmosphere(Scene& scene, bool multipleScattering) {
     Atmosphere& a = scene.sky.atmosphere;
     a.sunDirection = scene.sun.direction;
     a.solarIrradiance = scene.sun.radiance * (2.0f * kPi * (1.0f - scene.sun.cosHalfAngle));
-    scene.transmittanceLut = buildTransmittanceLut(a);
-    scene.multiScatteringLut = multipleScattering
-                                   ? buildMultiScatteringLut(a, scene.transmittanceLut)
-                                   : std::vector<Vec3f>(size_t(kMultiScatteringLutSize) * kMultiScatteringLutSize);
+    const bool keepTables = multipleScattering && tablesBuiltFor && sameMedium(*tablesBuiltFor, a) &&
+                            !scene.transmittanceLut.empty() && !scene.multiScatteringLut.empty();
+    if (!keepTables) {
+        scene.transmittanceLut = buildTransmittanceLut(a);
+        scene.multiScatteringLut = multipleScattering
+                                       ? buildMultiScatteringLut(a, scene.transmittanceLut)
+                                       : std::vector<Vec3f>(size_t(kMultiScatteringLutSize) * kMultiScatteringLutSize);
+    }
     scene.skyViewLut = buildSkyViewLut(a, scene.transmittanceLut, scene.multiScatteringLut);
     scene.sun.radiance *= transmittanceToTop(a, viewOf(scene.transmittanceLut), skyViewRadius(a), a.sunDirection.y);
 }

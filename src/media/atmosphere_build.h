@@ -31,7 +31,14 @@ std::vector<Vec3f> buildSkyViewLut(const Atmosphere& a, const std::vector<Vec3f>
 /// over its disk, taken as at the top of the atmosphere), the three tables are built, and the sun's
 /// radiance takes the transmittance towards it (reddened near the horizon, zero below it). Call once
 /// after the sun and sky are set, before buildLights. Without `multipleScattering` the tables hold
-/// single scattering alone (the tests compare that with a brute-force integral).
-void buildAtmosphere(Scene& scene, bool multipleScattering = true);
+/// single scattering alone (the tests compare that with a brute-force integral). `tablesBuiltFor`: the
+/// atmosphere the scene's tables were last built for with multiple scattering, if any; where its medium
+/// is the scene's, the transmittance and multiple-scattering tables are kept (they do not depend on the
+/// sun) and only the sky view table is built again: a sequence whose time of day moves relights each
+/// frame in a fraction of the time, with the same bits.
+void buildAtmosphere(Scene& scene, bool multipleScattering = true, const Atmosphere* tablesBuiltFor = nullptr);
+
+/// Whether `a` and `b` are the same medium: every field but the sun's direction and irradiance.
+bool sameMedium(const Atmosphere& a, const Atmosphere& b);
 
 } // namespace urbis
