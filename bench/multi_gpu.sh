@@ -6,7 +6,9 @@
 # Usage: bench/multi_gpu.sh [steps]   steps: a comma list of sf,city,sequence (default all three)
 # Environment: URBIS_BIN (default build/urbis), GPUS (default 1,2,4,8, up to the machine's count),
 #   SF (sf_downtown_2023.osm.pbf; default $URBIS_DEPS/data/ or ../shared/data/), SPP (64),
-#   OUT (default ./multi-gpu-out): multi_gpu.log, SCENE_SIZE_N.json (--stats), seq_N.log.
+#   OUT (default ./multi-gpu-out): multi_gpu.log, SCENE_SIZE_N.json (--stats), seq_N.log,
+#   SEQ_FILM (WIDTHxHEIGHT:SPP of the sequence's frames; default the README's 400x225:8, which the host
+#   bounds: docs/multi_gpu.md § Sequences; 1920x1080:32 gives the GPUs the larger share).
 # Every image of a row must be the same file (the tiles' pixels are the one-GPU frame's, bit for bit):
 # the script says how many distinct images each row made. The city is built once a run (1M buildings:
 # about 40 s of host time on the H200 machine), so a row of four GPU counts pays four builds.
@@ -64,10 +66,13 @@ fi
 
 # A 240-frame sequence spread by frame over the GPUs (each renders whole frames from one upload).
 if [[ $STEPS == *,sequence,* ]]; then
-  python3 - "$HERE/../docs/examples/dusk_flyover.json" "$OUT/flyover_240.json" <<'PY'
+  python3 - "$HERE/../docs/examples/dusk_flyover.json" "$OUT/flyover_240.json" "${SEQ_FILM:-400x225:8}" <<'PY'
 import json, sys
 scene = json.load(open(sys.argv[1]))
 scene["animation"]["fps"] = 59.75   # 4 s of keyframes: frames 0..239
+size, spp = sys.argv[3].split(":")
+scene["film"]["width"], scene["film"]["height"] = (int(v) for v in size.split("x"))
+scene["integrator"]["spp"] = int(spp)
 json.dump(scene, open(sys.argv[2], "w"))
 PY
   for n in "${counts[@]}"; do
@@ -77,11 +82,11 @@ PY
         --out "$OUT/seq_$n/f%04d.png" >"$OUT/seq_$n.log" 2>&1 || status=1
     echo "$n $(( ($(date +%s%N) - start) / 1000000 ))" >>"$OUT/seq_times"
   done
-  python3 - "$OUT/seq_times" <<'PY' | tee -a "$LOG"
+  python3 - "$OUT/seq_times" "${SEQ_FILM:-400x225:8}" <<'PY' | tee -a "$LOG"
 import sys
 rows = [tuple(int(v) for v in line.split()) for line in open(sys.argv[1])]
 first = rows[0]
-print("| 240 frames | " + " | ".join(
+print(f"| 240 frames {sys.argv[2]} | " + " | ".join(
     f"{n} GPUs {ms / 1000:.2f} s (x{first[1] / ms:.2f}, eff {first[1] / ms * first[0] / n:.2f})" for n, ms in rows) + " |")
 PY
   rm -f "$OUT/seq_times"
