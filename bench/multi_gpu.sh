@@ -48,10 +48,12 @@ for n in counts:
     if not os.path.exists(path):
         cells.append(f"{n}: failed")
         continue
-    s = json.load(open(path))["seconds"]["render"]
+    stats = json.load(open(path))
+    s = stats["seconds"]["render"]
     first = first or (n, s)
     speedup = first[1] / s
-    cells.append(f"{n} GPUs {s:.3f} s (x{speedup:.2f}, eff {speedup * first[0] / n:.2f})")
+    bands = "/".join(str(b) for b in stats.get("tiles_by_device", []))   # the bands each GPU took
+    cells.append(f"{n} GPUs {s:.3f} s (x{speedup:.2f}, eff {speedup * first[0] / n:.2f}{', bands ' + bands if bands else ''})")
     images.add(hashlib.md5(open(os.path.join(out, f"{name}_{size}_{n}.png"), "rb").read()).hexdigest())
 print(f"| {name} {size} | " + " | ".join(cells) + f" | {len(images)} distinct image(s) |")
 PY

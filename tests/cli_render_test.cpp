@@ -42,6 +42,7 @@ TEST(CliRender, StatsFileHasTheKeysScriptsCompare) {
     EXPECT_GT(stats["triangles"].get<size_t>(), 60u);
     EXPECT_GT(stats["bvh_nodes"].get<size_t>(), 1u);
     EXPECT_GT(stats["rays_per_second"].get<double>(), 0.0);
+    EXPECT_TRUE(stats.at("tiles_by_device").empty()) << "one device spreads no bands";
     size_t bytes = 0;
     for (const auto& [kind, n] : stats["bytes_by_kind"].items()) bytes += n.get<size_t>();
     EXPECT_EQ(bytes, stats["bytes_scene"].get<size_t>());

@@ -24,6 +24,8 @@
 #include <cstring>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 using namespace urbis;
 using namespace urbis::test;
 
@@ -136,7 +138,11 @@ TEST(GpuTiles, TwoDevicesOnOneGpuWriteTheImageOfOne) {
     ASSERT_EQ(two.exitCode, 0) << two.err;
     EXPECT_EQ(readFile(dir / "one.png"), readFile(dir / "two.png")) << "the tiles of two devices are not the frame of one";
     EXPECT_NE(two.err.find("#0, "), std::string::npos) << "names both devices:\n" << two.err;
-    EXPECT_NE(readFile(dir / "two.json").find("\"2 x "), std::string::npos) << "device_name counts the GPUs";
+    const auto stats = nlohmann::json::parse(readFile(dir / "two.json"));
+    EXPECT_EQ(stats.at("device_name").get<std::string>().rfind("2 x ", 0), 0u) << "device_name counts the GPUs";
+    const std::vector<uint32_t> bands = stats.at("tiles_by_device").get<std::vector<uint32_t>>();
+    ASSERT_EQ(bands.size(), 2u);
+    EXPECT_EQ(bands[0] + bands[1], bandsOf(150, 90, 2 * kGpuStreamsPerDevice).size()) << "a band lost or rendered twice";
     CommandResult single = runUrbis(kSmall + "--devices 0 --denoise --out single.png", dir);
     ASSERT_EQ(single.exitCode, 0) << single.err;
     EXPECT_EQ(readFile(dir / "one.png"), readFile(dir / "single.png")) << "--devices 0 is not --device cuda";

@@ -199,6 +199,7 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
         {"seconds_render", counters.seconds},
         {"rays", counters.rays},
         {"tiles_by_rank", tilesByRank},   // under mpirun (docs/scale.md); empty otherwise
+        {"tiles_by_device", device.tilesByDevice},   // over --devices (docs/multi_gpu.md); empty otherwise
         {"rays_per_second", counters.seconds > 0 ? double(counters.rays) / counters.seconds : 0.0},
         // The scene as a scene file has it (its order dropped: the stats' object sorts its keys).
         {"scene", nlohmann::json(sceneToJson(o.scene))},

@@ -84,6 +84,7 @@ void RenderBackend::renderOnGpus(const Camera& camera, const RenderSettings& set
                                  bool denoise, RenderCounters& counters, DeviceReport& report) {
     GpuScene& first = *gpus_[0];
     PhotonTimings photons;
+    std::vector<uint32_t> tilesByDevice;
     if (gpus_.size() == 1) {
         first.setFilm(film);
         if (settings.integrator == IntegratorKind::Path) first.render(camera, settings, samples, counters);
@@ -102,6 +103,8 @@ void RenderBackend::renderOnGpus(const Camera& camera, const RenderSettings& set
         const TileShare share = renderTilesOnWorkers(workers, bandsOf(film.width, film.height, int(workers.size())), film);
         counters.seconds = secondsSince(start);
         counters.rays = share.rays;
+        tilesByDevice.assign(gpus_.size(), 0);   // the workers are the devices' streams, device by device
+        for (size_t w = 0; w < workers.size(); ++w) tilesByDevice[w / kGpuStreamsPerDevice] += share.tilesByWorker[w];
         if (denoise) first.setFilm(film);   // the gathered film, for the first GPU to denoise
     }
     const auto start = std::chrono::steady_clock::now();
@@ -109,7 +112,7 @@ void RenderBackend::renderOnGpus(const Camera& camera, const RenderSettings& set
     const double secondsDenoise = secondsSince(start);
     if (gpus_.size() == 1 || denoise) first.readFilm(film);
     const std::string name = gpus_.size() > 1 ? std::to_string(gpus_.size()) + " x " + first.info().name : first.info().name;
-    report = DeviceReport{"cuda", name, first.memory(), secondsDenoise, photons};
+    report = DeviceReport{"cuda", name, first.memory(), secondsDenoise, photons, tilesByDevice};
 }
 
 void RenderBackend::render(const Camera& camera, const RenderSettings& settings, SampleRange samples, Film& film,
@@ -124,7 +127,7 @@ void RenderBackend::render(const Camera& camera, const RenderSettings& settings,
             std::fprintf(stderr, "urbis: %s; falling back to the CPU\n", e.what());
         }
     }
-    report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}, 0.0, PhotonTimings{}};
+    report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}, 0.0, PhotonTimings{}, {}};
     if (settings.integrator == IntegratorKind::Path) {
         renderCpu(scene_.view(), camera, settings, samples, film, showProgress, counters);
     } else {

@@ -19,6 +19,7 @@ struct DeviceReport {
     GpuMemory memory;             ///< device memory by kind, of the first GPU (zero on the CPU)
     double secondsDenoise = 0;    ///< wall time of the denoiser (zero without)
     PhotonTimings photons;        ///< the photon integrators' passes (zero for the path tracer)
+    std::vector<uint32_t> tilesByDevice;   ///< the bands each GPU of `--devices` rendered (empty for one device)
 };
 
 /// The CPU's model name from /proc/cpuinfo, or "cpu" where unknown.

@@ -34,10 +34,10 @@ std::vector<uint32_t> renderAcrossRanks(const MpiWorld& world, const Scene& scen
     if (onGpu) {
         gpu = GpuScene::upload(scene, Film::bytesFor(film.width, film.height, film.hasAovs()), gpuOfRank(world));
         renderer = std::make_unique<GpuTileRenderer>(*gpu, camera, settings, samples);
-        report = DeviceReport{"cuda", gpu->info().name, GpuMemory{}, 0.0, PhotonTimings{}};
+        report = DeviceReport{"cuda", gpu->info().name, GpuMemory{}, 0.0, PhotonTimings{}, {}};
     } else {
         renderer = std::make_unique<CpuTileRenderer>(scene.view(), camera, settings, samples);
-        report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}, 0.0, PhotonTimings{}};
+        report = DeviceReport{"cpu", cpuModelName(), GpuMemory{}, 0.0, PhotonTimings{}, {}};
     }
     const uint32_t side = tileSizeFor(film.width, film.height, world.ranks(), onGpu ? kGpuTileSide : 64);
     const auto start = std::chrono::steady_clock::now();

@@ -532,8 +532,8 @@ uint64_t GpuTileStream::renderTile(const Camera& camera, const RenderSettings& s
     // The device's copies go to the pinned staging, so that they queue on the stream behind the kernels
     // and the host thread waits for this stream alone; then the host puts the rows in place.
     size_t bytes = sizeof(unsigned long long);
-    forEachFilmArray([&](auto, bool, const auto&, const auto& array) { bytes += array.empty() ? 0 : tile.pixels() * sizeof(array[0]); },
-                     m.film, host.arrays);
+    forEachFilmArray([&](auto, bool, const auto& array) { bytes += array.empty() ? 0 : tile.pixels() * sizeof(array[0]); },
+                     host.arrays);
     s.staging.reserve(bytes);
     URBIS_CUDA_CHECK(cudaMemcpyAsync(s.staging.data(), s.rayCount.data(), sizeof(unsigned long long), cudaMemcpyDeviceToHost,
                                      s.stream));

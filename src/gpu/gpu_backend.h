@@ -119,7 +119,8 @@ private:
 /// Renders tiles of a GpuScene's device film on a CUDA stream of its own, with its own ray counter.
 /// A 256-pixel tile is about one wave of blocks on an H200, so one launch at a time would leave SMs
 /// idle under each tile's slowest pixels; tiles on several streams of one device run at once, and the
-/// next tile's blocks take those SMs. Each stream is driven by one host thread at a time.
+/// next tile's blocks take those SMs. Each stream is driven by one host thread at a time; its GpuScene
+/// must outlive it.
 class GpuTileStream {
 public:
     explicit GpuTileStream(GpuScene& gpu);
