@@ -35,7 +35,7 @@ TEST(ClusterTiles, SizeLeavesEveryRankSeveralTiles) {
     EXPECT_EQ(tileSizeFor(1920, 1080, 16), 64u);   // 510 tiles
     EXPECT_EQ(tileSizeFor(96, 64, 2), 16u);        // 64: 2 tiles, 32: 6, 16: 24
     EXPECT_EQ(tileSizeFor(8, 8, 4), 16u);          // never below 16 (one TBB task)
-    // GPUs take up to kGpuTileSide: 256 fills an H200 in one launch.
+    // GPU ranks take up to kGpuTileSide: 256, about one wave of blocks on an H200.
     EXPECT_EQ(tileSizeFor(1920, 1080, 8, kGpuTileSide), 256u);    // 40 tiles
     EXPECT_EQ(tileSizeFor(1920, 1080, 16, kGpuTileSide), 128u);   // 256: 40 tiles, 128: 135
     EXPECT_EQ(tileSizeFor(150, 90, 2, kGpuTileSide), 32u);        // 64: 6 tiles, 32: 15

@@ -44,9 +44,9 @@ public:
     RenderBackend(const RenderBackend&) = delete;
     RenderBackend& operator=(const RenderBackend&) = delete;
 
-    /// Adds `samples` of every pixel to `film`: on one GPU in one launch, over several GPUs in tiles
-    /// of tileSizeFor(..., kGpuTileSide) from one queue (renderTilesOnWorkers: the same pixels, bit for
-    /// bit), on the CPU by renderCpu or renderPhotonsCpu (`showProgress`: its progress bar). With
+    /// Adds `samples` of every pixel to `film`: on one GPU in one launch, over several GPUs in bands
+    /// (bandsOf) from one queue, on kGpuStreamsPerDevice streams of each (renderTilesOnWorkers: the same
+    /// pixels, bit for bit), on the CPU by renderCpu or renderPhotonsCpu (`showProgress`: its progress bar). With
     /// `denoise` (the film must keep AOVs) the first device then denoises the film in place. "auto"
     /// falls back to the CPU if the GPU fails, `film` then as it was.
     void render(const Camera& camera, const RenderSettings& settings, SampleRange samples, Film& film, bool denoise,

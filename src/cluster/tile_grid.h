@@ -17,8 +17,9 @@ std::vector<PixelRect> tilesOf(uint32_t width, uint32_t height, uint32_t tileSiz
 /// For CPUs 64 (each tile a few TBB tasks of 16x16); for GPUs kGpuTileSide.
 uint32_t tileSizeFor(uint32_t width, uint32_t height, int workers, uint32_t largest = 64);
 
-/// The largest tile a GPU is given: 256 x 256 pixels, 512 blocks of 128 threads, enough to fill the
-/// SMs of an H200 (132) several times over in one launch.
+/// The largest tile a GPU rank of an MPI render is given: 256 x 256 pixels, 512 blocks of 128 threads,
+/// about one wave on an H200 (132 SMs, four blocks each). The rank renders one at a time (docs/scale.md);
+/// the devices of one process take bands on several streams instead (bandsOf).
 constexpr uint32_t kGpuTileSide = 256;
 
 /// The CUDA streams, each with its host thread, that render one GPU's tiles at once (GpuTileStream):
