@@ -4,32 +4,16 @@
 // seeds, and writes it through the same code, so its screenshot and the render of its saved scene
 // are the same file.
 #include "cli_support.h"
+#include "png_support.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <png.h>
 
 #include <cstdlib>
 #include <vector>
 
 namespace urbis::test {
 namespace {
-
-/// A PNG's pixels as 8-bit RGB, row-major; empty if it cannot be read.
-struct Rgb {
-    uint32_t width = 0, height = 0;
-    std::vector<uint8_t> pixels;
-};
-
-Rgb readRgbPng(const std::filesystem::path& path) {
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&image, path.c_str())) return {};
-    image.format = PNG_FORMAT_RGB;
-    Rgb out{image.width, image.height, std::vector<uint8_t>(PNG_IMAGE_SIZE(image))};
-    if (!png_image_finish_read(&image, nullptr, out.pixels.data(), 0, nullptr)) return {};
-    return out;
-}
 
 bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 const char* const kXvfb = "xvfb-run -a -s '-screen 0 1280x1024x24'";

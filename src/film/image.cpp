@@ -27,6 +27,9 @@ bool encodePng(const Rgb8Image& image, FILE* file) {
     png_init_io(png, file);
     png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    // zlib level 3 rather than libpng's 6: a 1080p render at 4 spp in 200 ms rather than 586 ms, for a
+    // file 4 % larger (the encoder is a large part of a sequence's host time per frame).
+    png_set_compression_level(png, 3);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_write_info(png, info);
     for (uint32_t y = 0; y < image.height; ++y)
