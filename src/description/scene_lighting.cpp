@@ -9,14 +9,13 @@ namespace urbis {
 
 void lightScene(Scene& scene, const SceneDescription& d, const GeoOrigin& origin) {
     const CelestialLights celestial = celestialLightsOf(d, origin);
-    const bool hadTables = scene.sky.model == SkyModel::Atmosphere && !scene.skyViewLut.empty();
-    const Atmosphere before = scene.sky.atmosphere;
+    const Atmosphere before = scene.sky.atmosphere;   // what the scene's tables, if any, were built for
     scene.sun = celestial.sun;
     scene.night = celestial.night;
     scene.sky = skyOf(d.sky);
     // Takes the sun's transmittance into scene.sun (the sun is set afresh above); a scene lit before
     // keeps the tables that do not depend on the sun.
-    buildAtmosphere(scene, true, hadTables ? &before : nullptr);
+    buildAtmosphere(scene, true, &before);
     buildLights(scene);
 }
 

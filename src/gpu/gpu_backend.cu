@@ -475,8 +475,7 @@ void GpuScene::renderPhotons(const Scene& host, const Camera& camera, const Rend
         URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
         EventTimer timer;
         timer.start();
-        m.launchRender(camera, settings, SampleRange{s, 1}, PixelRect{0, 0, settings.width, settings.height},
-                       m.rayCount.data(), nullptr, photons);
+        m.launchRender(camera, settings, SampleRange{s, 1}, photons);
         const double seconds = timer.stopMs() * 1e-3;
         timings.camera += seconds;
         counters.rays += m.rayCount.download()[0];
