@@ -54,7 +54,8 @@ LAYERS = {
     "viewer": 14,       # the viewer's camera, input handling, scene edits and scripts, apart from any window
     "export": 14,       # the triangle twin as glTF and OBJ files (tinygltf), whole or in tiles
     "animation": 14,    # camera paths and time-of-day keyframes: the scene description of any instant
-    "app": 15,          # the urbis command
+    "render": 15,       # the Renderer every front-end drives: an integrator's passes and state over the devices
+    "app": 16,          # the urbis command
 }
 
 # The portability header sits under everything: any folder may include it, math/ of its own rank too.

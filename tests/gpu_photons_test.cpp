@@ -2,7 +2,7 @@
 // photon map's and the photon buffers' images agree within noise (GPU photons scatter with fast-math
 // shading, so the photons differ from the CPU's after their first bounces), the buffers flag the same
 // blocks, and the photon map stores about as many photons.
-#include "cpu/cpu_photons.h"
+#include "render/renderer.h"
 #include "gpu_test_support.h"
 #include "photon_test_scenes.h"
 
@@ -52,14 +52,15 @@ TEST(GpuPhotons, CpuAndGpuAgreeOnTheStreetCanyon) {
         settings.integrator = kind;
         const char* name = kind == IntegratorKind::PhotonMap ? "photon map" : "photon buffers";
         Film cpuFilm(settings.width, settings.height, false), gpuFilm(settings.width, settings.height, false);
-        PhotonState state;
         RenderCounters counters;
-        PhotonTimings cpuTimings, gpuTimings;
-        renderPhotonsCpu(scene, camera, settings, SampleRange{0, settings.spp}, cpuFilm, state, counters, cpuTimings);
-        std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
-        gpu->setFilm(gpuFilm);
-        gpu->renderPhotons(scene, camera, settings, SampleRange{0, settings.spp}, counters, gpuTimings);
-        gpu->readFilm(gpuFilm);
+        DeviceReport cpuReport, gpuReport;
+        Renderer::make(scene, kind, {"cpu", {}, 0, false, nullptr})
+            ->render(camera, settings, SampleRange{0, settings.spp}, cpuFilm, false, false, counters, cpuReport);
+        Renderer::make(scene, kind, {"cuda", {}, 0, false, nullptr})
+            ->render(camera, settings, SampleRange{0, settings.spp}, gpuFilm, false, false, counters, gpuReport);
+        ASSERT_TRUE(cpuReport.photons && gpuReport.photons) << name;
+        const PhotonTimings& cpuTimings = *cpuReport.photons;
+        const PhotonTimings& gpuTimings = *gpuReport.photons;
         const LinearImage cpuImage = meanRadiance(cpuFilm), gpuImage = meanRadiance(gpuFilm);
         EXPECT_NEAR(meanLuminance(gpuImage) / meanLuminance(cpuImage), 1.0, 0.02) << name;
         EXPECT_LT(blockDifference(gpuImage, cpuImage), 0.06) << name;

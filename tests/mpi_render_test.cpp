@@ -83,15 +83,26 @@ TEST(MpiRender, KilledRankEndsTheJobWithoutOutput) {
         EXPECT_FALSE(std::filesystem::exists(dir / file)) << file;
 }
 
-TEST(MpiRender, PhotonIntegratorIsRefusedOnEveryRank) {
+// The photon integrators render one round a sample (each rank's light pass, then the tiles, from rank
+// 0's film of the rounds before): the same PNG as one process, and the photon stats from rank 0.
+TEST(MpiRender, PhotonIntegratorsOverTwoRanksWriteThePngOfOneProcess) {
     std::string why;
     const std::string mpirun = mpirunPrefix(2, why);
     if (mpirun.empty()) GTEST_SKIP() << why;
     auto dir = scratchDir("mpi_photons");
-    CommandResult r = runUrbis(kSmall + "--integrator photon-map --out p.png", dir, mpirun);
-    EXPECT_NE(r.exitCode, 0);
-    EXPECT_NE(r.err.find("only the path integrator"), std::string::npos) << r.err;
-    EXPECT_FALSE(std::filesystem::exists(dir / "p.png"));
+    for (const std::string integrator : {"photon-map", "photon-buffers"}) {
+        const std::string frame = kSmall + "--integrator " + integrator + " --photons 4000 ";
+        CommandResult one = runUrbis(frame + "--out one.png", dir);
+        ASSERT_EQ(one.exitCode, 0) << one.err;
+        CommandResult two = runUrbis(frame + "--out two.png --stats stats.json", dir, mpirun);
+        ASSERT_EQ(two.exitCode, 0) << two.err;
+        EXPECT_EQ(readFile(dir / "one.png"), readFile(dir / "two.png")) << integrator << ": not the one process's frame";
+        const nlohmann::json stats = nlohmann::json::parse(readFile(dir / "stats.json"));
+        EXPECT_GT(stats.at("photons").at("photon_rays").get<uint64_t>(), 0u) << integrator;
+        const std::vector<uint32_t> tiles = stats.at("tiles_by_rank").get<std::vector<uint32_t>>();
+        ASSERT_EQ(tiles.size(), 2u);
+        EXPECT_EQ(tiles[0] + tiles[1], 2 * 24u) << integrator << ": 24 tiles in each of the two rounds";
+    }
 }
 
 TEST(MpiRender, TwoRanksShareASequenceByFrame) {

@@ -4,6 +4,7 @@
 // photon map and the photon buffers against the path tracer's converged image.
 #include "cpu/cpu_photons.h"
 #include "cpu/cpu_renderer.h"
+#include "render/renderer.h"
 #include "integrators/photon_buffer_layout.h"
 #include "integrators/photon_camera.h"
 #include "integrators/photon_emission_setup.h"
@@ -46,10 +47,10 @@ double meanLuminance(const LinearImage& image) {
 LinearImage renderPhotons(const Scene& scene, const Camera& camera, RenderSettings settings, IntegratorKind kind) {
     settings.integrator = kind;
     Film film(settings.width, settings.height, false);
-    PhotonState state;
     RenderCounters counters;
-    PhotonTimings timings;
-    renderPhotonsCpu(scene, camera, settings, SampleRange{0, settings.spp}, film, state, counters, timings);
+    DeviceReport report;
+    Renderer::make(scene, kind, {"cpu", {}, 0, false, nullptr})
+        ->render(camera, settings, SampleRange{0, settings.spp}, film, false, false, counters, report);
     return meanRadiance(film);
 }
 
@@ -253,16 +254,15 @@ TEST(PhotonBuffers, VisibilityFlagsAndPersistence) {
     settings.integrator = IntegratorKind::PhotonBuffers;
     // Close to the west row's facade, looking at it: the east row is neither seen nor reached.
     const Camera camera = cameraFromHeading(Vec3f{-3, 3, 0}, 270.0f, 0.0f, 40.0f, 1.5f);
-    PhotonState state;
-    Film film(settings.width, settings.height, false);
-    RenderCounters counters;
+    CpuPhotonPasses passes(scene);
+    const PhotonState& state = passes.state();
     PhotonTimings timings;
-    renderPhotonsCpu(scene, camera, settings, SampleRange{0, 2}, film, state, counters, timings);
+    for (uint32_t sample : {0u, 1u}) passes.runPass(camera, settings, sample, timings);
     EXPECT_EQ(timings.blocks, 2u);
     EXPECT_EQ(timings.blocksWithMemory, 1u);
     EXPECT_EQ(state.passes, 2u);
     const std::vector<unsigned long long> before = state.texels;
-    renderPhotonsCpu(scene, camera, settings, SampleRange{2, 2}, film, state, counters, timings);
+    for (uint32_t sample : {2u, 3u}) passes.runPass(camera, settings, sample, timings);
     EXPECT_EQ(state.passes, 4u);
     ASSERT_EQ(state.texels.size(), before.size()) << "the same blocks seen: no new memory";
     double sumBefore = 0, sumAfter = 0;

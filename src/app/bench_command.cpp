@@ -3,14 +3,14 @@
 #include "app/memory_json.h"
 #include "app/memory_limit.h"
 #include "app/output_paths.h"
-#include "app/render_device.h"
 #include "app/terrain_accuracy.h"
 #include "description/scene_json.h"
 #include "description/scene_parts.h"
-#include "gpu/gpu_backend.h"
 #include "integrators/path_tracer.h"
 #include "film/film_output.h"
 #include "io/atomic_file.h"
+#include "render/cpu_device.h"
+#include "render/renderer.h"
 #include "base/input_error.h"
 
 #include <nlohmann/json.hpp>
@@ -49,7 +49,7 @@ void addBenchCommand(CLI::App& app, BenchCommandLine& line) {
     line.scene.addOptions(*cmd, {"--osm", "--buildings", "--bbox", "--width", "--height", "--spp", "--seed", "--time", "--location", "--sun",
                                  "--camera", "--camera-geo", "--geometry", "--no-streets", "--sky", "--no-aerial-perspective",
                                  "--terrain", "--dem", "--terrain-march",
-                                 "--planet", "--camera-orbit", "--fov", "--clouds"});
+                                 "--planet", "--camera-orbit", "--fov", "--clouds", "--integrator", "--photons", "--photon-radius"});
     cmd->add_option("--device", r.device, "cuda, cpu, or auto")->check(CLI::IsMember({"auto", "cpu", "cuda"}))->capture_default_str();
     cmd->add_option("--threads", r.threads, "CPU threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
     cmd->add_option("--repeats", o.repeats, "Timed runs per measurement (0: 20 on the GPU, 3 on the CPU)")->check(CLI::Range(0, 10000))->capture_default_str();
@@ -120,34 +120,6 @@ double median(std::vector<float> v) {
     return v.size() % 2 ? v[m] : 0.5 * (double(v[m - 1]) + double(v[m]));
 }
 
-/// Wall-clock milliseconds of `repeats` runs of `work` on the CPU.
-template <typename Work>
-std::vector<float> timeCpu(int repeats, Work&& work) {
-    std::vector<float> ms;
-    for (int i = 0; i < repeats; ++i) {
-        auto t0 = Clock::now();
-        work();
-        ms.push_back(float(std::chrono::duration<double, std::milli>(Clock::now() - t0).count()));
-    }
-    return ms;
-}
-
-std::vector<float> timeCpuTrace(const Scene& scene, const std::vector<Ray>& rays, bool shadow, int repeats) {
-    const SceneView view = scene.view();
-    std::vector<SurfaceHit> hits(rays.size());
-    std::vector<uint8_t> blocked(rays.size());
-    return timeCpu(repeats, [&] {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t i = r.begin(); i < r.end(); ++i) {
-                if (shadow)
-                    blocked[i] = occludedScene(view, rays[i]);
-                else
-                    hits[i] = intersectScene(view, rays[i]);
-            }
-        });
-    });
-}
-
 struct Row {
     std::string name;
     size_t rays;
@@ -158,7 +130,7 @@ struct Row {
 
 void runBench(const BenchOptions& o) {
     const RunOptions& r = o.render.run;
-    const RenderSettings settings = renderSettingsOf(o.render.scene.integrator, o.render.scene.film);
+    const RenderSettings settings = renderSettingsOf(o.render.scene);
     size_t threads = r.threads ? r.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
     checkOutputPath("--json", o.jsonFile, {".json"});
@@ -174,17 +146,16 @@ void runBench(const BenchOptions& o) {
         std::remove((o.jsonFile + ".tmp").c_str());
     }
 
-    std::string device = r.device;
-    GpuInfo gpu;
-    if (device != "cpu") {
-        gpu = probeGpu();
-        if (!gpu.available && device == "cuda") throw InputError("--device cuda: " + gpu.reason, FailureKind::Device);
-        device = gpu.available ? "cuda" : "cpu";
-    }
-    const bool onGpu = device == "cuda";
-    const int repeats = o.repeats > 0 ? o.repeats : (onGpu ? 20 : 3);
     if (o.terrainAccuracy) {
-        runTerrainAccuracy(o, onGpu, onGpu ? gpu.name : cpuModelName(), repeats);
+        std::string device = r.device;
+        GpuInfo gpu;
+        if (device != "cpu") {
+            gpu = probeGpu();
+            if (!gpu.available && device == "cuda") throw InputError("--device cuda: " + gpu.reason, FailureKind::Device);
+            device = gpu.available ? "cuda" : "cpu";
+        }
+        const bool onGpu = device == "cuda";
+        runTerrainAccuracy(o, onGpu, onGpu ? gpu.name : cpuModelName(), o.repeats > 0 ? o.repeats : (onGpu ? 20 : 3));
         return;
     }
 
@@ -192,29 +163,22 @@ void runBench(const BenchOptions& o) {
     if (!o.render.saveSceneFile.empty()) writeSceneFile(o.render.scene, o.render.saveSceneFile);
     const Scene& scene = prepared.scene;
     RayBatches batches = makeRays(scene, prepared.camera, settings);
-    const std::string deviceName = onGpu ? gpu.name : cpuModelName();
-    if (r.verbose || r.device == "cuda")
-        std::fprintf(stderr, "urbis: benchmarking on %s (%s)\n", deviceName.c_str(), device.c_str());
+    const size_t extra = batches.primary.size() * (sizeof(Ray) + sizeof(SurfaceHit)) +
+                         Film::bytesFor(settings.width, settings.height, false);
+    const std::unique_ptr<Renderer> renderer = Renderer::make(scene, settings.integrator, {r.device, {}, extra, r.verbose, nullptr});
+    const std::string device = renderer->deviceKind(), deviceName = renderer->deviceName();
+    const bool onGpu = device == "cuda";
+    const int repeats = o.repeats > 0 ? o.repeats : (onGpu ? 20 : 3);
+    const int warmup = onGpu ? o.warmup : 0;
 
     std::vector<Row> rows = {{"primary", batches.primary.size(), {}},
                              {"diffuse", batches.diffuse.size(), {}},
                              {"shadow", batches.shadow.size(), {}}};
     const std::vector<Ray>* batch[3] = {&batches.primary, &batches.diffuse, &batches.shadow};
-    std::vector<float> frameMs;
-    RenderSettings frame = settings;
-    GpuMemory memory;
-    if (onGpu) {
-        size_t extra = batches.primary.size() * (sizeof(Ray) + sizeof(SurfaceHit)) +
-                       Film::bytesFor(frame.width, frame.height, false);
-        std::unique_ptr<GpuScene> g = GpuScene::upload(scene, extra);
-        for (int k = 0; k < 3; ++k) rows[k].ms = g->timeTrace(*batch[k], k == 2, o.warmup, repeats);
-        frameMs = g->timeRender(prepared.camera, frame, o.warmup, repeats);
-        memory = g->memory();
-    } else {
-        for (int k = 0; k < 3; ++k) rows[k].ms = timeCpuTrace(scene, *batch[k], k == 2, repeats);
-        RenderCounters counters;
-        frameMs = timeCpu(repeats, [&] { renderCpu(scene.view(), prepared.camera, frame, false, counters); });
-    }
+    for (int k = 0; k < 3; ++k) rows[k].ms = renderer->timeTrace(*batch[k], k == 2, warmup, repeats);
+    const RenderSettings& frame = settings;
+    const std::vector<float> frameMs = renderer->timeFrames(prepared.camera, frame, warmup, repeats);
+    const GpuMemory memory = renderer->memory();
 
     std::printf("urbis bench: %s, %zu triangles, %zu BVH nodes; %s (%s)\n", prepared.summary.source.c_str(),
                 scene.triangles.size(), scene.nodes.size(), deviceName.c_str(), device.c_str());
@@ -222,7 +186,7 @@ void runBench(const BenchOptions& o) {
     nlohmann::json json = {{"source", prepared.summary.source}, {"buildings", prepared.summary.buildings},
                            {"triangles", scene.triangles.size()}, {"walls", scene.walls.size()}, {"bvh_nodes", scene.nodes.size()},
                            {"device", device}, {"device_name", deviceName}, {"repeats", repeats},
-                           {"warmup", onGpu ? o.warmup : 0}, {"width", frame.width}, {"height", frame.height},
+                           {"warmup", warmup}, {"width", frame.width}, {"height", frame.height},
                            {"primary_building_hit_fraction",
                             double(batches.primaryBuildingHits) / double(std::max<size_t>(1, batches.primary.size()))}};
     for (const Row& row : rows) {

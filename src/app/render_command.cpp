@@ -6,14 +6,12 @@
 #include "app/memory_limit.h"
 #include "app/output_paths.h"
 #include "app/planet_scene.h"
-#include "app/render_device.h"
-#include "app/render_ranks.h"
+#include "app/devices_option.h"
 #include "app/scene_city.h"
 #include "app/render_frames.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
 #include "citygen/city_terrain.h"
-#include "cpu/cpu_renderer.h"
 #include "description/scene_checks.h"
 #include "description/scene_json.h"
 #include "description/scene_lighting.h"
@@ -21,6 +19,7 @@
 #include "io/atomic_file.h"
 #include "base/input_error.h"
 #include "film/film_output.h"
+#include "render/renderer.h"
 #include "media/cloud_build.h"
 #include "scene/scene.h"
 
@@ -159,8 +158,7 @@ nlohmann::json bytesByKind(const SceneMemory& memory, const std::map<std::string
 /// Writes --stats: counts, what was dropped and repaired, memory (the scene's, the peak host and
 /// device bytes), timings, rays/s and the scene description.
 void writeStats(const RenderOptions& o, const PreparedScene& prepared, const RenderSettings& settings,
-                const RenderCounters& counters, const DeviceReport& device, const std::vector<uint32_t>& tilesByRank,
-                size_t threads, double secondsWrite) {
+                const RenderCounters& counters, const DeviceReport& device, size_t threads, double secondsWrite) {
     const BuildSummary& summary = prepared.summary;
     const Scene& scene = prepared.scene;
     SceneMemory memory = scene.memory();
@@ -198,14 +196,14 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
                      {"render", counters.seconds}, {"denoise", device.secondsDenoise}, {"write", secondsWrite}}},
         {"seconds_render", counters.seconds},
         {"rays", counters.rays},
-        {"tiles_by_rank", tilesByRank},   // under mpirun (docs/scale.md); empty otherwise
+        {"tiles_by_rank", device.tilesByRank},   // under mpirun (docs/scale.md); empty otherwise
         {"tiles_by_device", device.tilesByDevice},   // over --devices (docs/multi_gpu.md); empty otherwise
         {"rays_per_second", counters.seconds > 0 ? double(counters.rays) / counters.seconds : 0.0},
         // The scene as a scene file has it (its order dropped: the stats' object sorts its keys).
         {"scene", nlohmann::json(sceneToJson(o.scene))},
     };
-    if (settings.integrator != IntegratorKind::Path) {
-        const PhotonTimings& p = device.photons;
+    if (device.photons) {
+        const PhotonTimings& p = *device.photons;
         stats["photons"] = {{"seconds", {{"flags", p.flags}, {"photons", p.photons}, {"grid", p.grid}, {"camera", p.camera},
                                          {"lighting_pass", p.lightingPass}}},
                             {"photon_rays", p.photonRays}, {"stored", p.stored}, {"texels", p.texels},
@@ -239,7 +237,7 @@ void runRender(const RenderOptions& o, const MpiWorld* world) {
     requireMemory(hostFilmBytes(film.width, film.height, filmOutputNeedsAovs(film.output, layers), film.denoise), limit,
                   "the " + std::to_string(film.width) + "x" + std::to_string(film.height) + " image");
 
-    const std::vector<int> gpus = devicesOf(run.devices, run.device, renderSettingsOf(o.scene.integrator, film).integrator);
+    const std::vector<int> gpus = devicesOf(run.devices, run.device);
     if (!gpus.empty() && world && world->ranks() > 1)
         throw InputError("--devices under mpirun: each rank takes the GPU of its local rank (--device cuda; docs/multi_gpu.md)",
                          FailureKind::Usage);
@@ -251,26 +249,21 @@ void runRender(const RenderOptions& o, const MpiWorld* world) {
         renderFrames(o, prepared, gpus, world);
         return;
     }
-    RenderSettings settings = renderSettingsOf(o.scene.integrator, film);
-    applyPhotonSettings(o.scene.photons, settings);
+    const RenderSettings settings = renderSettingsOf(o.scene);
     RenderCounters counters;
     DeviceReport device;
     Film image(settings.width, settings.height, aovs);
-    std::vector<uint32_t> tilesByRank;
-    if (world && world->ranks() > 1)
-        tilesByRank = renderAcrossRanks(*world, prepared.scene, prepared.camera, settings, image.nextSamples(settings.spp), image,
-                          film.denoise, run.device, counters, device);
-    else
-        RenderBackend(prepared.scene, gpus.empty() ? run.device : "cuda", gpus, Film::bytesFor(image.width, image.height, aovs),
-                      run.verbose)
-            .render(prepared.camera, settings, image.nextSamples(settings.spp), image, film.denoise, isatty(2), counters, device);
+    const RendererOptions where{gpus.empty() ? run.device : "cuda", gpus, Film::bytesFor(image.width, image.height, aovs),
+                                run.verbose, world};
+    Renderer::make(prepared.scene, settings.integrator, where)
+        ->render(prepared.camera, settings, image.nextSamples(settings.spp), image, film.denoise, isatty(2), counters, device);
     if (!writes) return;
 
     auto t0 = Clock::now();
     writeFilm(image, film.output, FilmOutputOptions{film.exposure, film.exrFloat, layers});
     double secondsWrite = secondsSince(t0);
 
-    if (!run.statsFile.empty()) writeStats(o, prepared, settings, counters, device, tilesByRank, threads, secondsWrite);
+    if (!run.statsFile.empty()) writeStats(o, prepared, settings, counters, device, threads, secondsWrite);
     std::string also;
     for (const std::string* file : {&run.statsFile, &o.saveSceneFile})
         if (!file->empty()) also += " and " + *file;

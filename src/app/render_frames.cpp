@@ -6,13 +6,12 @@
 
 #include "animation/animation_timeline.h"
 #include "animation/frame_range.h"
-#include "app/render_device.h"
-#include "app/render_ranks.h"
 #include "app/video_encoding.h"
 #include "base/input_error.h"
 #include "description/scene_lighting.h"
 #include "description/scene_parts.h"
 #include "film/film_output.h"
+#include "render/renderer.h"
 
 #include <chrono>
 #include <cmath>
@@ -79,36 +78,35 @@ void renderFrames(const RenderOptions& o, PreparedScene& prepared, const std::ve
     const bool timeMoves = !o.scene.animation.time.empty();
     const uint32_t layers = filmLayerMaskOf(film.layers);
     const bool aovs = film.denoise || filmOutputNeedsAovs(pattern, layers);
-    RenderSettings settings = renderSettingsOf(o.scene.integrator, film);
-    applyPhotonSettings(o.scene.photons, settings);
+    const RenderSettings settings = renderSettingsOf(o.scene);
     std::printf("urbis: frames %u..%u: %zu to render, %zu kept\n", range.first, range.last, frames.size(),
                 size_t(range.count()) - frames.size());
     std::fflush(stdout);
 
-    // The scene goes to each GPU once, before the first frame: one backend a device of --devices, each
+    // The scene goes to each GPU once, before the first frame: one renderer a device of --devices, each
     // rendering whole frames; else one, on the GPU of this rank's local rank under mpirun.
     const size_t filmBytes = Film::bytesFor(settings.width, settings.height, aovs);
-    std::vector<std::unique_ptr<RenderBackend>> backends;
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    const auto rendererOn = [&](const std::string& device, const std::vector<int>& on) {
+        renderers.push_back(Renderer::make(prepared.scene, settings.integrator, {device, on, filmBytes, o.run.verbose, nullptr}));
+    };
     if (gpus.size() > 1) {
-        for (int gpu : gpus) backends.push_back(std::make_unique<RenderBackend>(prepared.scene, "cuda", std::vector<int>{gpu},
-                                                                                filmBytes, o.run.verbose));
+        for (int gpu : gpus) rendererOn("cuda", {gpu});
     } else {
         const bool rankGpu = gpus.empty() && world && world->ranks() > 1 && o.run.device == "cuda";
-        const std::vector<int> device = rankGpu ? std::vector<int>{gpuOfRank(*world)} : gpus;
-        backends.push_back(std::make_unique<RenderBackend>(prepared.scene, gpus.empty() ? o.run.device : "cuda", device,
-                                                           filmBytes, o.run.verbose));
+        rendererOn(gpus.empty() ? o.run.device : "cuda", rankGpu ? std::vector<int>{gpuOfRank(*world)} : gpus);
     }
 
-    // Frames go to the backends from one queue. The host scene is relit and the lights uploaded under
+    // Frames go to the renderers from one queue. The host scene is relit and the lights uploaded under
     // the lock (another device's frame may be relighting it); the render then reads only its device.
     std::mutex lock;
     TileQueue queue(frames.size());
     size_t done = 0;
     double secondsRendering = 0;
     std::string device = "cpu";
-    const bool showProgress = isatty(2) && backends.size() == 1;
-    runOnWorkerThreads(backends.size(), [&](size_t b) {
-        RenderBackend& backend = *backends[b];
+    const bool showProgress = isatty(2) && renderers.size() == 1;
+    runOnWorkerThreads(renderers.size(), [&](size_t b) {
+        Renderer& renderer = *renderers[b];
         for (int32_t i; (i = queue.take()) >= 0;) {
             const auto t0 = Clock::now();
             const uint32_t n = frames[size_t(i)];
@@ -120,16 +118,17 @@ void renderFrames(const RenderOptions& o, PreparedScene& prepared, const std::ve
                 if (timeMoves) {   // only the lights and the sky: the geometry and its BVH stay as built
                     relightWindows(prepared.scene, prepared.windowUses, hourOf(d));
                     lightScene(prepared.scene, d, prepared.origin);
-                    backend.relight();
+                    renderer.relight();
                 }
                 camera = cameraOf(d.camera, float(film.width) / float(film.height), prepared.origin, prepared.framingPieces,
                                   groundOf(prepared.scene));
                 output = FilmOutputOptions{d.film.exposure, film.exrFloat, layers};
             }
+            renderer.startAfresh();
             Film image(settings.width, settings.height, aovs);
             RenderCounters counters;
             DeviceReport report;
-            backend.render(camera, settings, image.nextSamples(settings.spp), image, film.denoise, showProgress, counters, report);
+            renderer.render(camera, settings, image.nextSamples(settings.spp), image, film.denoise, showProgress, counters, report);
             const std::string path = framePath(pattern, n);
             writeFilm(image, path, output);
             const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -137,7 +136,7 @@ void renderFrames(const RenderOptions& o, PreparedScene& prepared, const std::ve
             device = report.device;
             secondsRendering += seconds;
             ++done;
-            const double left = secondsRendering / double(done) * double(frames.size() - done) / double(backends.size());
+            const double left = secondsRendering / double(done) * double(frames.size() - done) / double(renderers.size());
             std::printf("urbis: frame %u (%zu of %zu) %s in %.2f s, about %s left\n", n, done, frames.size(), path.c_str(),
                         seconds, durationText(left).c_str());
             std::fflush(stdout);

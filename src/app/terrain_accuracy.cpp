@@ -1,6 +1,5 @@
 #include "app/terrain_accuracy.h"
 
-#include "app/render_device.h"
 #include "geometry/scene_intersect.h"
 #include "gpu/gpu_backend.h"
 #include "io/atomic_file.h"

@@ -1,12 +1,13 @@
 // The viewer's render loop: one sample per pixel a frame added to a film on the GPU (when usable)
-// or the CPU, started over on any change, and the film made into a picture where it is (the GPU's
-// picture kernel, or film/aov_display.h on the CPU), denoised while it is young.
+// or the CPU by the scene's integrator (a Renderer, whose state, such as the photon buffers, lives
+// across restarts), started over on any change, and the film made into a picture where it is (the
+// GPU's picture kernel, or film/aov_display.h on the CPU), denoised while it is young.
 #pragma once
 
 #include "film/aov_display.h"
 #include "film/film.h"
-#include "gpu/gpu_backend.h"
 #include "integrators/render_counters.h"
+#include "render/renderer.h"
 #include "scene/camera.h"
 #include "scene/render_settings.h"
 #include "scene/scene.h"
@@ -22,12 +23,13 @@ public:
     /// filter's gain is largest on a young image, and its cost is then paid on few frames.
     static constexpr uint32_t kDenoiseUntil = 64;
 
-    /// Renders `scene` (which must outlive this) on `device` ("auto", "cpu" or "cuda", as renderOnDevice
-    /// picks; "cuda" without a usable GPU throws InputError).
-    ProgressiveRenderer(const Scene& scene, const std::string& device, bool verbose);
+    /// Renders `scene` (which must outlive this) on `deviceChoice` ("auto", "cpu" or "cuda", as Renderer
+    /// picks; "cuda" without a usable GPU throws InputError) by `integrator`.
+    ProgressiveRenderer(const Scene& scene, IntegratorKind integrator, const std::string& deviceChoice, bool verbose);
     ~ProgressiveRenderer();
 
-    /// Starts a fresh film of settings' size (with AOVs `aovs`) seen by `camera`.
+    /// Starts a fresh film of settings' size (with AOVs `aovs`) seen by `camera`, rendered by
+    /// settings.integrator (a renderer made anew where it is another than before).
     void restart(const Camera& camera, const RenderSettings& settings, bool aovs);
     /// Adds the next sample of every pixel; counters hold its rays and seconds.
     void addSample(RenderCounters& counters);
@@ -42,23 +44,24 @@ public:
     /// bytes of device memory: a mapped OpenGL pixel buffer) or, where null, for picture() to copy.
     void makePicture(FilmDisplay display, float exposureEv, bool denoise, uint8_t* deviceRgba = nullptr);
     /// The picture makePicture made last (with no deviceRgba), on the host.
-    Rgb8Image picture() const;
+    Rgb8Image picture() const { return renderer_->picture(); }
 
-    const std::string& device() const { return device_; }   ///< "cpu" or "cuda"
-    const std::string& deviceName() const { return deviceName_; }
+    std::string device() const { return renderer_->deviceKind(); }   ///< "cpu" or "cuda"
+    const std::string& deviceName() const { return renderer_->deviceName(); }
     /// Device memory held (zero on the CPU).
-    size_t deviceBytes() const;
+    size_t deviceBytes() const { return renderer_->memory().total(); }
 
 private:
     const Scene& scene_;
-    std::unique_ptr<GpuScene> gpu_;
-    std::string device_ = "cpu", deviceName_;
+    std::string deviceChoice_;
+    bool verbose_;
+    IntegratorKind integrator_;
+    std::unique_ptr<Renderer> renderer_;
     Camera camera_;
     RenderSettings settings_;
     Film film_;                 ///< on the GPU: its size and layers, its sums only when film() copied them
-    Rgb8Image hostPicture_;     ///< the CPU's last picture
     uint32_t samples_ = 0;
-    bool filmCurrent_ = true;   ///< film_ holds the device film's samples
+    bool filmCurrent_ = true;   ///< film_ holds the device's samples
 };
 
 } // namespace urbis

@@ -2,7 +2,6 @@
 
 #include "app/memory_limit.h"
 #include "app/output_paths.h"
-#include "app/render_device.h"
 #include "base/input_error.h"
 #include "cpu/cpu_denoiser.h"
 #include "description/celestial_parts.h"
@@ -32,7 +31,7 @@ constexpr float kDefaultPivot = 100.0f;
 ViewSession::ViewSession(const SceneDescription& scene, const RunOptions& run)
     : run_(run), memoryLimit_(memoryLimit(run.maxMemory)), scene_(scene) {
     prepared_ = std::make_unique<PreparedScene>(prepareScene(scene_, run_.strict, memoryLimit_));
-    renderer_ = std::make_unique<ProgressiveRenderer>(prepared_->scene, run_.device, run_.verbose);
+    renderer_ = std::make_unique<ProgressiveRenderer>(prepared_->scene, renderSettingsOf(scene_).integrator, run_.device, run_.verbose);
     controller_ = std::make_unique<CameraController>(
         ViewCamera{}, [this](Vec3f o, Vec3f d, float maxDistance) { return probe(o, d, maxDistance); });
     sceneToCamera();
@@ -77,7 +76,7 @@ void ViewSession::cameraToScene() {
 
 void ViewSession::restart() {
     const bool aovs = scene_.film.denoise || display_ != FilmDisplay::Image;
-    renderer_->restart(renderCamera(), renderSettingsOf(scene_.integrator, scene_.film), aovs);
+    renderer_->restart(renderCamera(), renderSettingsOf(scene_), aovs);
     changed_ = true;
     changedAt_ = now();
 }
@@ -92,7 +91,8 @@ bool ViewSession::edit(const SceneDescription& next) {
     try {
         if (change == SceneChange::Rebuild) {
             auto prepared = std::make_unique<PreparedScene>(prepareScene(next, false, memoryLimit_));
-            auto renderer = std::make_unique<ProgressiveRenderer>(prepared->scene, run_.device, run_.verbose);
+            auto renderer = std::make_unique<ProgressiveRenderer>(prepared->scene, renderSettingsOf(next).integrator, run_.device,
+                                                                  run_.verbose);
             renderer_ = std::move(renderer);   // the old renderer refers to the old scene: it goes first
             prepared_ = std::move(prepared);
         }
@@ -163,14 +163,15 @@ bool ViewSession::screenshot(const std::string& path, uint32_t width, uint32_t h
             shot.integrator.spp = spp ? spp : std::max(renderer_->samples(), 1u);
             const bool aovs = shot.film.denoise || filmOutputNeedsAovs(path, layers);
             requireMemory(hostFilmBytes(shot.film.width, shot.film.height, aovs), memoryLimit_, "the screenshot");
-            const RenderSettings settings = renderSettingsOf(shot.integrator, shot.film);
+            const RenderSettings settings = renderSettingsOf(shot);
             const Camera camera = cameraOf(shot.camera, float(shot.film.width) / float(shot.film.height),
                                            prepared_->origin, prepared_->framingPieces, groundOf(prepared_->scene));
             Film film(settings.width, settings.height, aovs);
             RenderCounters counters;
             DeviceReport device;
-            renderOnDevice(prepared_->scene, camera, settings, film.nextSamples(settings.spp), film, shot.film.denoise,
-                           run_.device, isatty(2), run_.verbose, counters, device);
+            const RendererOptions where{run_.device, {}, Film::bytesFor(film.width, film.height, aovs), run_.verbose, nullptr};
+            Renderer::make(prepared_->scene, settings.integrator, where)
+                ->render(camera, settings, film.nextSamples(settings.spp), film, shot.film.denoise, isatty(2), counters, device);
             writeFilm(film, path, output);
         }
         std::fprintf(stderr, "urbis: wrote the screenshot %s\n", path.c_str());

@@ -6,6 +6,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -126,6 +127,20 @@ MpiWorld::MpiWorld() {
 MpiWorld::~MpiWorld() { MPI_Finalize(); }
 
 void MpiWorld::barrier() const { MPI_Barrier(MPI_COMM_WORLD); }
+
+void MpiWorld::broadcastFilm(Film& film) const {
+    forEachFilmArray(
+        [](auto, bool, auto& array) {
+            // In pieces of at most 1 GiB: MPI counts in int.
+            auto* bytes = reinterpret_cast<uint8_t*>(array.data());
+            const size_t total = array.size() * sizeof(array[0]);
+            for (size_t at = 0; at < total; at += size_t(1) << 30) {
+                const int count = int(std::min(total - at, size_t(1) << 30));
+                check(MPI_Bcast(bytes + at, count, MPI_BYTE, 0, MPI_COMM_WORLD), "MPI_Bcast");
+            }
+        },
+        film.arrays);
+}
 
 void MpiWorld::abort(int exitCode) const {
     MPI_Abort(MPI_COMM_WORLD, exitCode);

@@ -36,6 +36,10 @@ public:
     [[noreturn]] void abort(int exitCode) const;
     /// Waits until every rank has come here (MPI_Barrier).
     void barrier() const;
+    /// Makes every rank's `film` (of one size and layers on all ranks) rank 0's, every array bit for bit
+    /// (MPI_Bcast): between the rounds of an integrator whose light pass precedes each sample, so that a
+    /// tile goes on from the samples other ranks added to it.
+    void broadcastFilm(Film& film) const;
 
 private:
     int rank_ = 0, ranks_ = 1, localRank_ = 0;

@@ -15,6 +15,7 @@ MpiWorld::~MpiWorld() = default;
 
 void MpiWorld::abort(int exitCode) const { std::exit(exitCode); }
 void MpiWorld::barrier() const {}
+void MpiWorld::broadcastFilm(Film&) const {}
 
 TileShare renderTilesAcrossRanks(const MpiWorld&, const std::vector<PixelRect>&, Film&, TileRenderer&) {
     throw InputError("urbis was built without MPI", FailureKind::Usage);

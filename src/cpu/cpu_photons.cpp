@@ -1,6 +1,5 @@
 #include "cpu/cpu_photons.h"
 
-#include "cpu/cpu_renderer.h"
 #include "integrators/photon_buffer_layout.h"
 #include "integrators/photon_camera.h"
 #include "integrators/photon_emission_setup.h"
@@ -98,73 +97,73 @@ PhotonGridView buildPhotonGridCpu(const std::vector<Photon>& photons, float radi
     return grid;
 }
 
-void renderPhotonsCpu(const Scene& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
-                      Film& film, PhotonState& state, RenderCounters& counters, PhotonTimings& timings) {
-    SceneView view = scene.view();
-    const PhotonsView emission = photonEmissionOf(scene, view);
-    view.photons = emission;
-    const bool buffers = settings.integrator == IntegratorKind::PhotonBuffers;
-    if (buffers && !state.built) {
-        state.blocks = buildPhotonBlocks(scene);
-        state.fixedScale = photonFixedScale(view, emission, settings);
-        state.built = true;
-    }
-    std::vector<Photon> slots, stored, sorted;
-    std::vector<uint32_t> start, end;
-    counters = {};
-    const auto began = Clock::now();
-    const uint64_t photonRaysBefore = timings.photonRays;
-    for (uint32_t s = samples.first; s < samples.first + samples.count; ++s) {
-        auto t = Clock::now();
-        if (buffers) {
-            // Visibility flags, then memory for the blocks seen for the first time; then the splats.
-            view.photons.pass = state.passes;
-            PhotonBuffersView& b = view.photons.buffers;
-            b = {state.blocks.blocks.data(), uint32_t(state.blocks.blocks.size()), state.blocks.blockOfObject.data(),
-                 uint32_t(state.blocks.blockOfObject.size()), state.blocks.groundCells.data(), state.blocks.groundW,
-                 state.blocks.groundH, state.blocks.groundLo, state.blocks.groundCell, nullptr, state.fixedScale};
-            if (newView(state.flagged, state.flaggedCamera, camera)) {
-                const std::vector<uint8_t> seen = seenBlocksCpu(view, camera, settings, s, state.blocks.blocks.size());
-                const uint32_t texels = allocateSeenBlocks(state.blocks.blocks, seen, camera.position, settings,
-                                                           state.passes, uint32_t(state.texels.size() / 3));
-                state.texels.resize(size_t(texels) * 3, 0);
-            }
-            b.texels = state.texels.data();
-            timings.flags += secondsSince(t);
-            t = Clock::now();
-            timings.photonRays += tracePhotonsCpu(view, settings, [&](uint32_t) { return PhotonSplatSink{b}; });
-            ++state.passes;
-        } else {
-            view.photons.pass = s;
-            const uint32_t perPhoton = settings.maxDepth;
-            slots.assign(size_t(settings.photonsPerPass) * perPhoton, Photon{});
-            timings.photonRays += tracePhotonsCpu(view, settings, [&](uint32_t i) {
-                return PhotonSlotSink{slots.data() + size_t(i) * perPhoton};
-            });
-            stored.clear();
-            for (const Photon& p : slots)
-                if (maxComponent(p.power) > 0.0f) stored.push_back(p);
-            timings.stored += stored.size();
-            timings.photons += secondsSince(t);
-            t = Clock::now();
-            view.photons.grid = buildPhotonGridCpu(stored, photonRadiusAt(settings.photonRadius, settings.photonAlpha, s),
-                                                   sorted, start, end);
-            timings.grid += secondsSince(t);
+CpuPhotonPasses::CpuPhotonPasses(const Scene& scene) : scene_(scene), view_(scene.view()) {
+    view_.photons = photonEmissionOf(scene, view_);
+}
+
+PhotonsView CpuPhotonPasses::runPass(const Camera& camera, const RenderSettings& settings, uint32_t sample,
+                                     PhotonTimings& timings) {
+    SceneView view = view_;
+    auto t = Clock::now();
+    if (settings.integrator == IntegratorKind::PhotonBuffers) {
+        if (!state_.built) {
+            state_.blocks = buildPhotonBlocks(scene_);
+            state_.fixedScale = photonFixedScale(view_, view_.photons, settings);
+            state_.built = true;
         }
-        if (buffers) timings.photons += secondsSince(t);
+        // Visibility flags, then memory for the blocks seen for the first time; then the splats.
+        view.photons.pass = state_.passes;
+        PhotonBuffersView& b = view.photons.buffers;
+        PhotonBlockSet& blocks = state_.blocks;
+        b = {blocks.blocks.data(), uint32_t(blocks.blocks.size()), blocks.blockOfObject.data(),
+             uint32_t(blocks.blockOfObject.size()), blocks.groundCells.data(), blocks.groundW, blocks.groundH,
+             blocks.groundLo, blocks.groundCell, nullptr, state_.fixedScale};
+        if (newView(state_.flagged, state_.flaggedCamera, camera)) {
+            const std::vector<uint8_t> seen = seenBlocksCpu(view, camera, settings, sample, blocks.blocks.size());
+            const uint32_t texels = allocateSeenBlocks(blocks.blocks, seen, camera.position, settings, state_.passes,
+                                                       uint32_t(state_.texels.size() / 3));
+            state_.texels.resize(size_t(texels) * 3, 0);
+        }
+        b.texels = state_.texels.data();
+        timings.flags += secondsSince(t);
         t = Clock::now();
-        RenderCounters pass;
-        renderCpu(view, camera, settings, SampleRange{s, 1}, film, false, pass);
-        timings.camera += secondsSince(t);
-        counters.rays += pass.rays;
+        timings.photonRays += tracePhotonsCpu(view, settings, [&](uint32_t) { return PhotonSplatSink{b}; });
+        ++state_.passes;
+        timings.photons += secondsSince(t);
+        timings.texels = state_.texels.size() / 3;
+        timings.blocks = uint32_t(blocks.blocks.size());
+        timings.blocksWithMemory = 0;
+        for (const PhotonBlock& block : blocks.blocks) timings.blocksWithMemory += block.texelOffset != kNoTexels;
+    } else {
+        view.photons.pass = sample;
+        const uint32_t perPhoton = settings.maxDepth;
+        slots_.assign(size_t(settings.photonsPerPass) * perPhoton, Photon{});
+        timings.photonRays += tracePhotonsCpu(view, settings, [&](uint32_t i) {
+            return PhotonSlotSink{slots_.data() + size_t(i) * perPhoton};
+        });
+        stored_.clear();
+        for (const Photon& p : slots_)
+            if (maxComponent(p.power) > 0.0f) stored_.push_back(p);
+        timings.stored += stored_.size();
+        timings.photons += secondsSince(t);
+        t = Clock::now();
+        view.photons.grid = buildPhotonGridCpu(stored_, photonRadiusAt(settings.photonRadius, settings.photonAlpha, sample),
+                                               sorted_, start_, end_);
+        timings.grid += secondsSince(t);
     }
-    counters.rays += timings.photonRays - photonRaysBefore;
-    counters.seconds = secondsSince(began);
-    if (samples.count > 0) timings.lightingPass = timeLightingPassCpu(view, camera, settings, samples.first + samples.count - 1);
-    timings.texels = state.texels.size() / 3;
-    timings.blocks = uint32_t(state.blocks.blocks.size());
-    timings.blocksWithMemory = 0;
-    for (const PhotonBlock& b : state.blocks.blocks) timings.blocksWithMemory += b.texelOffset != kNoTexels;
+    return view.photons;
+}
+
+double CpuPhotonPasses::timeLightingPass(const PhotonsView& photons, const Camera& camera, const RenderSettings& settings,
+                                         uint32_t sample) {
+    SceneView view = view_;
+    view.photons = photons;
+    return timeLightingPassCpu(view, camera, settings, sample);
+}
+
+size_t CpuPhotonPasses::bytes() const {
+    return state_.texels.size() * sizeof(unsigned long long) + (slots_.capacity() + stored_.capacity() + sorted_.capacity()) * sizeof(Photon) +
+           (start_.capacity() + end_.capacity()) * sizeof(uint32_t);
 }
 
 } // namespace urbis

@@ -1,22 +1,18 @@
-// The photon integrators on the CPU (docs/photons.md): per sample index one photon pass (photons
-// traced from the lights over TBB, then the hash grid built or the photon buffers splatted) and one
-// camera pass (renderCpu). The photon buffers persist in a PhotonState across calls, so that a
-// resting camera accumulates and a moving one reuses them (the paper's progressive and slow-motion frames).
+// The photon passes on the CPU (docs/photons.md), as PhotonPasses: per sample index the photons traced
+// from the lights over TBB, then the hash grid built or the photon buffers splatted, before the sample's
+// camera pass. The photon buffers persist in the object across calls, so that a resting camera
+// accumulates and a moving one reuses them (the paper's progressive and slow-motion frames).
 #pragma once
 
-#include "film/film.h"
 #include "integrators/photon_blocks.h"
-#include "integrators/photon_timings.h"
-#include "integrators/render_counters.h"
-#include "scene/camera.h"
-#include "scene/render_settings.h"
+#include "integrators/photon_passes.h"
 #include "scene/scene.h"
 
 #include <vector>
 
 namespace urbis {
 
-/// What the photon integrators keep between calls on one scene: the blocks and their buffers.
+/// What the photon buffers keep between passes on one scene: the blocks and their buffers.
 struct PhotonState {
     bool built = false;
     PhotonBlockSet blocks;
@@ -32,10 +28,27 @@ struct PhotonState {
 PhotonGridView buildPhotonGridCpu(const std::vector<Photon>& photons, float radius, std::vector<Photon>& sorted,
                                   std::vector<uint32_t>& start, std::vector<uint32_t>& end);
 
-/// Adds samples `samples` of every pixel to `film` by settings.integrator (PhotonMap or
-/// PhotonBuffers), one photon pass per sample. The photon map's pass is the sample index (its radius
-/// shrinks with it); the buffers' passes go on from `state.passes`.
-void renderPhotonsCpu(const Scene& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
-                      Film& film, PhotonState& state, RenderCounters& counters, PhotonTimings& timings);
+class CpuPhotonPasses final : public PhotonPasses {
+public:
+    /// The passes of `scene` (which must outlive this).
+    explicit CpuPhotonPasses(const Scene& scene);
+
+    /// The photon map's pass is the sample index (its radius shrinks with it); the buffers' passes go on
+    /// from state().passes.
+    PhotonsView runPass(const Camera& camera, const RenderSettings& settings, uint32_t sample, PhotonTimings& timings) override;
+    double timeLightingPass(const PhotonsView& photons, const Camera& camera, const RenderSettings& settings,
+                            uint32_t sample) override;
+    size_t bytes() const override;
+
+    /// The photon buffers as they are now.
+    const PhotonState& state() const { return state_; }
+
+private:
+    const Scene& scene_;
+    SceneView view_;          ///< the host scene with the lights' photon emission
+    PhotonState state_;
+    std::vector<Photon> slots_, stored_, sorted_;   ///< the photon map's pass: what its grid points into
+    std::vector<uint32_t> start_, end_;
+};
 
 } // namespace urbis

@@ -99,6 +99,12 @@ void applyPhotonSettings(const PhotonsDescription& photons, RenderSettings& sett
     settings.photonLevelDistance = photons.levelDistance;
 }
 
+RenderSettings renderSettingsOf(const SceneDescription& scene) {
+    RenderSettings settings = renderSettingsOf(scene.integrator, scene.film);
+    applyPhotonSettings(scene.photons, settings);
+    return settings;
+}
+
 uint32_t filmLayerMaskOf(const std::vector<std::string>& layers) {
     uint32_t mask = 0;
     for (const std::string& name : layers)

@@ -42,6 +42,9 @@ RenderSettings renderSettingsOf(const IntegratorDescription& integrator, const F
 /// The photon integrators' parameters into `settings`.
 void applyPhotonSettings(const PhotonsDescription& photons, RenderSettings& settings);
 
+/// The render settings of `scene`: its integrator's, its film's size and its photon integrators'.
+RenderSettings renderSettingsOf(const SceneDescription& scene);
+
 /// The layer mask (film/film_layers.h) of film.layers' names.
 uint32_t filmLayerMaskOf(const std::vector<std::string>& layers);
 

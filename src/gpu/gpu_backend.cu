@@ -215,7 +215,6 @@ struct GpuScene::Impl {
     DeviceBuffer<unsigned long long> rayCount{1};
     DeviceBuffer<uint8_t> picture;        ///< drawPicture's own RGB picture
     DeviceBuffer<Vec3f> radianceKept;     ///< the film's radiance sums while a denoised picture is made
-    std::unique_ptr<GpuPhotonPasses> photonPasses;   ///< the photon integrators' passes and buffers, made on first use
 
     /// The device film's arrays as per-ray code sees them.
     FilmView filmView() {
@@ -321,13 +320,13 @@ void GpuScene::setFilm(const Film& host) {
 }
 
 void GpuScene::render(const Camera& camera, const RenderSettings& settings, SampleRange samples,
-                      RenderCounters& counters) {
+                      RenderCounters& counters, const PhotonsView& photons) {
     Impl& m = *impl_;
     m.use();
     URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
     EventTimer timer;
     timer.start();
-    m.launchRender(camera, settings, samples);
+    m.launchRender(camera, settings, samples, photons);
     counters.seconds = timer.stopMs() * 1e-3;
     URBIS_CUDA_CHECK(cudaDeviceSynchronize());
     counters.rays = m.rayCount.download()[0];
@@ -444,46 +443,14 @@ std::vector<float> GpuScene::timeTrace(const std::vector<Ray>& rays, bool shadow
     return ms;
 }
 
-std::vector<float> GpuScene::timeRender(const Camera& camera, const RenderSettings& settings, int warmup, int repeats) {
-    Impl& m = *impl_;
-    m.use();
-    setFilm(Film(settings.width, settings.height, false));
-    const SampleRange samples{0, settings.spp};
-    for (int i = 0; i < warmup; ++i) m.launchRender(camera, settings, samples);
-    URBIS_CUDA_CHECK(cudaDeviceSynchronize());
-    std::vector<float> ms;
-    EventTimer timer;
-    for (int i = 0; i < repeats; ++i) {
-        timer.start();
-        m.launchRender(camera, settings, samples);
-        ms.push_back(timer.stopMs());
-    }
-    return ms;
+std::unique_ptr<PhotonPasses> GpuScene::photonPasses(const Scene& scene) {
+    impl_->use();   // its buffers are allocated on this device
+    return std::make_unique<GpuPhotonPasses>(scene, *this);
 }
 
-void GpuScene::renderPhotons(const Scene& host, const Camera& camera, const RenderSettings& settings, SampleRange samples,
-                             RenderCounters& counters, PhotonTimings& timings) {
-    Impl& m = *impl_;
-    m.use();
-    if (!m.photonPasses) m.photonPasses = std::make_unique<GpuPhotonPasses>();
-    counters = {};
-    const uint64_t photonRaysBefore = timings.photonRays;
-    const double secondsBefore = timings.flags + timings.photons + timings.grid + timings.camera;
-    PhotonsView photons;
-    for (uint32_t s = samples.first; s < samples.first + samples.count; ++s) {
-        photons = m.photonPasses->runPass(host, m.scene.view(), camera, settings, s, timings);
-        URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
-        EventTimer timer;
-        timer.start();
-        m.launchRender(camera, settings, SampleRange{s, 1}, photons);
-        const double seconds = timer.stopMs() * 1e-3;
-        timings.camera += seconds;
-        counters.rays += m.rayCount.download()[0];
-    }
-    counters.rays += timings.photonRays - photonRaysBefore;
-    counters.seconds = timings.flags + timings.photons + timings.grid + timings.camera - secondsBefore;
-    if (samples.count > 0)
-        timings.lightingPass = m.photonPasses->timeLightingPass(m.scene.view(), photons, camera, settings, samples.first + samples.count - 1);
+SceneView GpuScene::deviceView() const {
+    impl_->use();
+    return impl_->scene.view();
 }
 
 GpuMemory GpuScene::memory() const {
@@ -491,7 +458,7 @@ GpuMemory GpuScene::memory() const {
     GpuMemory out;
     out.scene = m.scene.memory();
     out.film = m.filmBytes() + m.picture.bytes() + m.radianceKept.bytes();
-    out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes() + (m.photonPasses ? m.photonPasses->bytes() : 0);
+    out.rays = m.rays.bytes() + m.hits.bytes() + m.blocked.bytes() + m.rayCount.bytes();
     return out;
 }
 
@@ -519,14 +486,14 @@ GpuTileStream::~GpuTileStream() = default;
 GpuTileStream::GpuTileStream(GpuTileStream&&) noexcept = default;
 
 uint64_t GpuTileStream::renderTile(const Camera& camera, const RenderSettings& settings, SampleRange samples,
-                                   const PixelRect& tile, Film& host) {
+                                   const PixelRect& tile, Film& host, const PhotonsView& photons) {
     Impl& s = *impl_;
     GpuScene::Impl& m = s.gpu;
     m.use();
     if (host.width != m.filmWidth || host.height != m.filmHeight || host.hasAovs() != (m.film.albedoSum.size() > 0))
         throw std::invalid_argument("GpuTileStream::renderTile: the host film is not the device film's size and layers");
     URBIS_CUDA_CHECK(cudaMemsetAsync(s.rayCount.data(), 0, sizeof(unsigned long long), s.stream));
-    m.launchRender(camera, settings, samples, tile, s.rayCount.data(), s.stream);
+    m.launchRender(camera, settings, samples, tile, s.rayCount.data(), s.stream, photons);
     if (tile.pixels() == 0) return 0;
     // The device's copies go to the pinned staging, so that they queue on the stream behind the kernels
     // and the host thread waits for this stream alone; then the host puts the rows in place.

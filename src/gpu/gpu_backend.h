@@ -7,7 +7,7 @@
 #include "film/display_pixel.h"
 #include "film/film.h"
 #include "film/pixel_rect.h"
-#include "integrators/photon_timings.h"
+#include "integrators/photon_passes.h"
 #include "integrators/render_counters.h"
 #include "math/ray.h"
 #include "scene/camera.h"
@@ -62,10 +62,12 @@ public:
     /// Makes the device film a copy of `film` (its size, AOVs and sums): render calls add to it,
     /// and it stays on the device between them.
     void setFilm(const Film& film);
-    /// Adds samples `samples` of every pixel to the device film, like renderCpu: the path
-    /// tracer's kernel, then the AOV pass's when the film keeps AOVs. The film must be
-    /// settings.width x settings.height. counters.seconds is the kernels' time (CUDA events).
-    void render(const Camera& camera, const RenderSettings& settings, SampleRange samples, RenderCounters& counters);
+    /// Adds samples `samples` of every pixel to the device film, like renderCpu: the render kernel of
+    /// settings.integrator (whose camera pass sees `photons`, what its photon pass left), then the AOV
+    /// pass's when the film keeps AOVs. The film must be settings.width x settings.height.
+    /// counters.seconds is the kernels' time (CUDA events).
+    void render(const Camera& camera, const RenderSettings& settings, SampleRange samples, RenderCounters& counters,
+                const PhotonsView& photons = {});
     /// Uploads again what lightScene and relightWindows change of `scene` (the scene this GpuScene was
     /// uploaded from, relit for another time of day): the walls' lit windows, the light list, the sky's
     /// tables, the sun, sky and night records. The geometry and its BVH stay on the device as they are.
@@ -94,14 +96,13 @@ public:
     /// Kernel times in milliseconds of `repeats` launches tracing `rays` (closest hit, or
     /// any hit when `shadow`), after `warmup` untimed launches. Rays stay on the device.
     std::vector<float> timeTrace(const std::vector<Ray>& rays, bool shadow, int warmup, int repeats);
-    /// Kernel times in milliseconds of `repeats` path-traced frames after `warmup` ones.
-    std::vector<float> timeRender(const Camera& camera, const RenderSettings& settings, int warmup, int repeats);
-
-    /// Adds samples `samples` by a photon integrator (settings.integrator PhotonMap or PhotonBuffers),
-    /// as renderPhotonsCpu: per sample a photon pass (gpu_photons.h) and a camera pass. The photon
-    /// buffers persist between calls on this GpuScene; `scene` is the host scene it was uploaded from.
-    void renderPhotons(const Scene& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples,
-                       RenderCounters& counters, PhotonTimings& timings);
+    /// The photon integrators' light pre-pass on this device (gpu_photons.h), for the host `scene` this
+    /// GpuScene was uploaded from: its photons and buffers live as long as the returned object, which
+    /// must not outlive this GpuScene.
+    std::unique_ptr<PhotonPasses> photonPasses(const Scene& scene);
+    /// The device scene as the kernels see it (device pointers), with this GpuScene's device made the
+    /// calling thread's: for the passes of gpu_photons.h.
+    SceneView deviceView() const;
 
     /// Device memory held now, by kind.
     GpuMemory memory() const;
@@ -134,9 +135,9 @@ public:
     /// GpuScene::render does for every pixel, then copies those pixels of every film array into the same
     /// rectangle of `film` (the device film's size and layers; its other pixels left as they are).
     /// Returns the rays traced. A pixel's bits do not depend on the tiles or streams the frame is
-    /// rendered in: the sampler is keyed by pixel.
+    /// rendered in: the sampler is keyed by pixel. `photons`: as GpuScene::render's.
     uint64_t renderTile(const Camera& camera, const RenderSettings& settings, SampleRange samples, const PixelRect& tile,
-                        Film& film);
+                        Film& film, const PhotonsView& photons = {});
 
     struct Impl;
 

@@ -27,20 +27,18 @@ GpuScene::GpuScene(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 GpuScene::~GpuScene() = default;
 std::unique_ptr<GpuScene> GpuScene::upload(const Scene&, size_t, int) { noCuda(); }
 void GpuScene::setFilm(const Film&) { noCuda(); }
-void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, RenderCounters&) { noCuda(); }
+void GpuScene::render(const Camera&, const RenderSettings&, SampleRange, RenderCounters&, const PhotonsView&) { noCuda(); }
 void GpuScene::relight(const Scene&) { noCuda(); }
 void GpuScene::denoise(const DenoiseParams&) { noCuda(); }
 void GpuScene::readFilm(Film&) const { noCuda(); }
 void GpuScene::drawPicture(FilmDisplay, float, bool, uint8_t*) { noCuda(); }
 Rgb8Image GpuScene::readPicture() const { noCuda(); }
 LinearImage GpuScene::render(const Camera&, const RenderSettings&, RenderCounters&) { noCuda(); }
-void GpuScene::renderPhotons(const Scene&, const Camera&, const RenderSettings&, SampleRange, RenderCounters&, PhotonTimings&) {
-    noCuda();
-}
+std::unique_ptr<PhotonPasses> GpuScene::photonPasses(const Scene&) { noCuda(); }
+SceneView GpuScene::deviceView() const { noCuda(); }
 std::vector<SurfaceHit> GpuScene::intersect(const std::vector<Ray>&) { noCuda(); }
 std::vector<uint8_t> GpuScene::occluded(const std::vector<Ray>&) { noCuda(); }
 std::vector<float> GpuScene::timeTrace(const std::vector<Ray>&, bool, int, int) { noCuda(); }
-std::vector<float> GpuScene::timeRender(const Camera&, const RenderSettings&, int, int) { noCuda(); }
 GpuMemory GpuScene::memory() const { return {}; }
 const GpuInfo& GpuScene::info() const { return impl_->info; }
 
@@ -48,6 +46,8 @@ struct GpuTileStream::Impl {};
 GpuTileStream::GpuTileStream(GpuScene&) { noCuda(); }
 GpuTileStream::~GpuTileStream() = default;
 GpuTileStream::GpuTileStream(GpuTileStream&&) noexcept = default;
-uint64_t GpuTileStream::renderTile(const Camera&, const RenderSettings&, SampleRange, const PixelRect&, Film&) { noCuda(); }
+uint64_t GpuTileStream::renderTile(const Camera&, const RenderSettings&, SampleRange, const PixelRect&, Film&, const PhotonsView&) {
+    noCuda();
+}
 
 } // namespace urbis

@@ -167,7 +167,8 @@ struct GpuPhotonPasses::Impl {
     }
 };
 
-GpuPhotonPasses::GpuPhotonPasses() : impl_(std::make_unique<Impl>()) {}
+GpuPhotonPasses::GpuPhotonPasses(const Scene& scene, const GpuScene& gpu)
+    : scene_(scene), gpu_(gpu), impl_(std::make_unique<Impl>()) {}
 GpuPhotonPasses::~GpuPhotonPasses() = default;
 
 size_t GpuPhotonPasses::bytes() const {
@@ -176,15 +177,15 @@ size_t GpuPhotonPasses::bytes() const {
            m.slots.bytes() + m.stored.bytes() + m.keys.bytes() + m.cellStart.bytes() + m.cellEnd.bytes();
 }
 
-PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& deviceView, const Camera& camera,
-                                     const RenderSettings& settings, uint32_t sample, PhotonTimings& timings) {
+PhotonsView GpuPhotonPasses::runPass(const Camera& camera, const RenderSettings& settings, uint32_t sample,
+                                     PhotonTimings& timings) {
     Impl& m = *impl_;
     const bool buffers = settings.integrator == IntegratorKind::PhotonBuffers;
     if (!m.built) {
-        const SceneView hostView = scene.view();
-        m.emission = photonEmissionOf(scene, hostView);
+        const SceneView hostView = scene_.view();
+        m.emission = photonEmissionOf(scene_, hostView);
         if (buffers) {
-            m.blocks = buildPhotonBlocks(scene);
+            m.blocks = buildPhotonBlocks(scene_);
             m.fixedScale = photonFixedScale(hostView, m.emission, settings);
             m.blockOfObject.upload(m.blocks.blockOfObject);
             m.groundCells.upload(m.blocks.groundCells);
@@ -193,7 +194,7 @@ PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& device
         }
         m.built = true;
     }
-    SceneView view = deviceView;
+    SceneView view = gpu_.deviceView();
     view.photons = m.emission;
     URBIS_CUDA_CHECK(cudaMemset(m.rayCount.data(), 0, sizeof(unsigned long long)));
     EventTimer timer;
@@ -265,9 +266,9 @@ PhotonsView GpuPhotonPasses::runPass(const Scene& scene, const SceneView& device
     return view.photons;
 }
 
-double GpuPhotonPasses::timeLightingPass(const SceneView& deviceView, const PhotonsView& photons, const Camera& camera,
-                                         const RenderSettings& settings, uint32_t sample) {
-    SceneView view = deviceView;
+double GpuPhotonPasses::timeLightingPass(const PhotonsView& photons, const Camera& camera, const RenderSettings& settings,
+                                         uint32_t sample) {
+    SceneView view = gpu_.deviceView();
     view.photons = photons;
     const uint32_t pixels = settings.width * settings.height;
     DeviceBuffer<CameraChainEnd> ends(pixels);

@@ -1,5 +1,6 @@
 // The two renderers of a frame's tiles (cluster/tile_renderer.h): the CPU's thread pool, and one GPU
-// whose device film holds the frame while its tiles are rendered and copied back one by one.
+// whose device film holds the frame while its tiles are rendered and copied back one by one. Each adds
+// the samples of one round of its integrator, seen through what that round's light pass left.
 #pragma once
 
 #include "cluster/tile_renderer.h"
@@ -13,6 +14,7 @@ namespace urbis {
 /// Tiles by renderCpu on this process's threads, straight into the film it is given.
 class CpuTileRenderer final : public TileRenderer {
 public:
+    /// `scene`: as the camera pass sees it (with the round's photons).
     CpuTileRenderer(const SceneView& scene, const Camera& camera, const RenderSettings& settings, SampleRange samples)
         : scene_(scene), camera_(camera), settings_(settings), samples_(samples) {}
     void startFrame(const Film&) override {}
@@ -32,8 +34,9 @@ private:
 class GpuTileRenderer final : public TileRenderer {
 public:
     GpuTileRenderer(GpuScene& gpu, const Camera& camera, const RenderSettings& settings, SampleRange samples,
-                    bool makesFilm = true)
-        : gpu_(gpu), stream_(gpu), camera_(camera), settings_(settings), samples_(samples), makesFilm_(makesFilm) {}
+                    const PhotonsView& photons, bool makesFilm)
+        : gpu_(gpu), stream_(gpu), camera_(camera), settings_(settings), samples_(samples), photons_(photons),
+          makesFilm_(makesFilm) {}
     void startFrame(const Film& film) override {
         if (makesFilm_) gpu_.setFilm(film);
     }
@@ -45,6 +48,7 @@ private:
     Camera camera_;
     RenderSettings settings_;
     SampleRange samples_;
+    PhotonsView photons_;
     bool makesFilm_;
 };
 

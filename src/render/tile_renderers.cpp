@@ -1,4 +1,4 @@
-#include "app/tile_renderers.h"
+#include "render/tile_renderers.h"
 
 #include "cpu/cpu_renderer.h"
 
@@ -11,7 +11,7 @@ uint64_t CpuTileRenderer::renderTile(const PixelRect& tile, Film& film) {
 }
 
 uint64_t GpuTileRenderer::renderTile(const PixelRect& tile, Film& film) {
-    return stream_.renderTile(camera_, settings_, samples_, tile, film);
+    return stream_.renderTile(camera_, settings_, samples_, tile, film, photons_);
 }
 
 } // namespace urbis
