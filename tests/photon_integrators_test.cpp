@@ -61,7 +61,7 @@ Scene closedBoxScene(float rho, Vec3f emission) {
     test::addQuad(mesh, {-1, 9, -1}, {1, 9, -1}, {1, 9, 1}, {-1, 9, 1}, 1, 0);
     Material emitter{Vec3f{rho, rho, rho}};
     emitter.emission = emission;
-    Scene scene = Scene::build(mesh, {Material{Vec3f{rho, rho, rho}}, emitter});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{Vec3f{rho, rho, rho}}, emitter}});
     scene.sun = Sun{};
     scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     buildLights(scene);
