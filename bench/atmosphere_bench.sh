@@ -2,7 +2,7 @@
 # The day frame with the atmosphere and aerial perspective against the same frame without aerial
 # perspective (--no-aerial-perspective) and with the analytic sky (--sky analytic): `urbis bench`'s
 # 1 spp frame of the default generated city, interleaved runs so that a drift of the clocks touches
-# every variant alike. The goal (issue 20): with / without aerial perspective at most 1.15.
+# every variant alike. The goal: with / without aerial perspective at most 1.15.
 # Usage: bench/atmosphere_bench.sh BUILD_DIR [DEVICE [WIDTH HEIGHT [ROUNDS]]]
 #   DEVICE cuda (default; 1920x1080) or cpu; JSON and logs in $OUT (default ./atmosphere-out), one
 #   file per run: bench_<variant>_<device>_<round>.json; prints the median frame times and the ratios,

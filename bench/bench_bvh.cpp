@@ -1,9 +1,9 @@
 // BVH build speed and closest-hit rays/s of urbis against Embree 3 on the same triangles
 // and rays. Run: build/urbis_bench --benchmark_counters_tabular=true
-#include "accel/bvh_build.h"
 #include "accel/wide_bvh_build.h"
 #include "bench_scene.h"
-#include "geometry/triangle_scene.h"
+#include "bvh4/build.h"
+#include "bvh4/triangle_scene.h"
 #include "geometry/wide_triangle_scene.h"
 #include "scene/wide_triangle_scene_build.h"
 #include "scene/camera_framing.h"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# urbis against Blender's Cycles on the CPU, one city, camera and sample count (issue 25):
+# urbis against Blender's Cycles on the CPU, one city, camera and sample count:
 #   bench/cycles.sh [BUILD_DIR]        (env: SCENE, THREADS, OUT)
 # Exports the city of SCENE (default bench/cycles/scene.json: 200 generated buildings, a uniform
 # analytic sky so that both worlds are the same, 480x270, 16 spp) to a .glb, renders it with Cycles

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 27's figures (BENCHMARKS.md § Several GPUs): one process spreading tiles (`--devices 0,...,n-1`)
+# The figures of BENCHMARKS.md § Several GPUs: one process spreading tiles (`--devices 0,...,n-1`)
 # over 1, 2, 4, 8 GPUs of one host: 1080p and 4K frames of downtown San Francisco and of the generated
 # 1M-building city at 64 spp, and a 240-frame sequence (the README's fly-over at 59.75 fps) spread by
 # frame; each with its time, speed-up and parallel efficiency against one GPU, as a table.

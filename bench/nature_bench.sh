@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Nature together (issue 22's benchmark): `urbis bench`'s 1 spp frame of the forest under clouds
+# Nature together (BENCHMARKS.md § Nature together): `urbis bench`'s 1 spp frame of the forest under clouds
 # (docs/examples/forest_clouds.json: the generated city of 200 buildings with its river on the fBm
 # terrain, its parks' and streets' trees and 1.5 km of forest around it, the atmosphere, clouds at
 # 0.3) with everything, then with each element removed (the Cambridge thesis's Figure 4.17: an

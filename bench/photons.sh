@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Photon buffers against the hash-grid photon map and the path tracer (docs/photons.md; issue 23):
+# Photon buffers against the hash-grid photon map and the path tracer (docs/photons.md):
 # the generated city and San Francisco, by day and by night, at equal photons per pass. For each view
 # every integrator renders SPP passes; with REF_SPP > 0 a path-traced reference of REF_SPP samples gives
 # each image's relative MSE (bench/exr_error.py), and the photon map and the path tracer render again at
@@ -7,7 +7,7 @@
 # integrator, ms per pass, the photon pass (tracing, with the buffers' visibility flags and splats or
 # the map's stores), the grid build, the camera pass, the frame (all from --stats), the lighting pass
 # timed apart (photons.seconds.lighting_pass: the gathers or look-ups of every pixel's first hit), and
-# the ratios the issue asks for:
+# the ratios the goals ask for:
 #   lighting pass, the paper's measure: the map's gathers against the buffers' look-ups (goal 4x);
 #   photon and lighting passes: the map's photons + grid + gathers against the buffers' flags + photons + look-ups;
 #   frame: the photon map's against the buffers' (goal 2.5x).

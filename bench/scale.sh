@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 26's figures (BENCHMARKS.md § Scale): the generated city of N buildings, its host build time and
+# The figures of BENCHMARKS.md § Scale: the generated city of N buildings, its host build time and
 # peak memory, device memory and frame time (`urbis render --stats`); and MPI strong scaling, one frame
 # across 1, 2, 4, 8, 16 ranks of the 16 host cores, each rank given 16/ranks threads.
 # Usage: bench/scale.sh [steps] [sizes]

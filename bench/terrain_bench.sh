@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The terrain's marches against the fixed-step reference (issue 21): `urbis bench --terrain-accuracy`
+# The terrain's marches against the fixed-step reference: `urbis bench --terrain-accuracy`
 # over the default fBm landscape and over San Francisco's DEM (the two osmnx tiles), printing each
 # march's missed intersections, HDE, IDE and time.
 # Usage: bench/terrain_bench.sh BUILD_DIR [DEVICE [WIDTH HEIGHT [REPEATS]]]

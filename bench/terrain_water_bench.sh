@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 21's benchmark: 1 spp frames (1920 x 1080 unless told) of the fBm landscape alone, the same
+# BENCHMARKS.md § Terrain marches, frames with water: 1 spp frames (1920 x 1080 unless told) of the fBm landscape alone, the same
 # landscape with its lake and the atmosphere (docs/examples/lake_hills.json), and San Francisco on its
 # DEM with everything on (streets, water, trees, clouds, atmosphere), each found by the min/max
 # hierarchy and by the Cambridge rule (lei); then the marches' accuracy against the fixed-step

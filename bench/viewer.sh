@@ -3,7 +3,7 @@
 # frame and its picture (made where the film is: on the GPU by its kernel, left there as the window's
 # CUDA-OpenGL interop shows it), 1280x720 and 1920x1080, by day and by night, on downtown San
 # Francisco and the generated city; and the latency from a change to the first picture after it, for a camera move (the image
-# restarts) and a change of the time of day (the scene is rebuilt). The goal (issue 24): 60 fps at
+# restarts) and a change of the time of day (the scene is rebuilt). The goal: 60 fps at
 # 1920x1080 by day on the GPU.
 # Usage: bench/viewer.sh BUILD_DIR [DEVICE [FRAMES]]
 #   DEVICE cuda (default) or cpu; FRAMES per run (default 120 on cuda, 6 on cpu). SF is read from

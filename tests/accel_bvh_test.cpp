@@ -1,6 +1,6 @@
-#include "accel/bvh_build.h"
 #include "accel_test_scene.h"
-#include "geometry/triangle_scene.h"
+#include "bvh4/build.h"
+#include "bvh4/triangle_scene.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>

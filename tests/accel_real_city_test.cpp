@@ -45,7 +45,7 @@ TriangleMesh plainCity(const CityMesh& mesh) {
 TEST(AccelRealCity, SceneHitsEqualBruteForceOnTheBavarianVillage) {
     CityModel city = importOsm(URBIS_OSMNX_DATA "/planet_10.068,48.135_10.071,48.137.osm", ImportOptions{});
     CityMesh mesh = meshCity(city);
-    Scene scene = Scene::build(plainCity(mesh), mesh.materials);
+    Scene scene = Scene::build({.mesh = plainCity(mesh), .materials = mesh.materials});
     ASSERT_GT(scene.triangles.size(), 500u);
     const SceneView view = scene.view();
     Bounds3f b = mesh.cityBounds;

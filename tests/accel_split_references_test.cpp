@@ -87,7 +87,8 @@ TEST(SplitReferences, TracesOverDiagonalStreetsEqualBruteForce) {
     for (int i = 0; i < 60; ++i) appendDiagonalStreet(tris, -100.0f + 3.3f * float(i), -100.0f + 2.1f * float(i % 17) * 5.0f);
     TriangleMesh mesh;
     for (const Triangle& t : tris) mesh.add(t, TriangleInfo{0, 1, uint32_t(SurfacePart::Road)});
-    const Scene scene = Scene::build(mesh, std::vector<Material>(1), {}, {}, {GroundRecord::around(0, 0, -0.05f, 0)});
+    const Scene scene = Scene::build({.mesh = mesh, .materials = std::vector<Material>(1),
+                                      .grounds = {GroundRecord::around(0, 0, -0.05f, 0)}});
     // The streets' triangles have several references each, so several records.
     EXPECT_GT(scene.triangles.size(), tris.size() + (tris.size() - firstStreet));
     const SceneView view = scene.view();

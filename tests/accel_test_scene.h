@@ -2,10 +2,9 @@
 // edges, a ground grid and long thin triangles, all from a seed.
 #pragma once
 
-#include "accel/bvh_build.h"
-#include "accel/bvh_node.h"
 #include "accel/wide_bvh_traverse.h"
 #include "geometry/triangle_intersect.h"
+#include "math/bounds.h"
 #include "scene/triangle.h"
 
 #include <cfloat>

@@ -20,7 +20,7 @@ namespace {
 
 /// An empty scene under the atmosphere with the sun at `elevation` and `azimuth` degrees.
 Scene atmosphereScene(float elevation, float azimuth = 150.0f, bool multipleScattering = true) {
-    Scene scene = Scene::build(TriangleMesh{}, {Material{}});
+    Scene scene = Scene::build({.materials = {Material{}}});
     scene.sun = makeSun(elevation, azimuth, 0.27f, Vec3f{3, 3, 3});
     scene.sky.model = SkyModel::Atmosphere;
     buildAtmosphere(scene, multipleScattering);
@@ -240,7 +240,7 @@ TEST(Atmosphere, SkyTableSamplesItsPdf) {
 // in order, the sun dimmed by the atmosphere once.
 TEST(Atmosphere, BuildLightsBuildsTheTablesItNeeds) {
     const auto scene = [](bool atmosphereFirst) {
-        Scene s = Scene::build(TriangleMesh{}, {Material{}});
+        Scene s = Scene::build({.materials = {Material{}}});
         s.sun = makeSun(20.0f, 150.0f, 0.27f, Vec3f{3, 3, 3});
         s.sky.model = SkyModel::Atmosphere;
         if (atmosphereFirst) buildAtmosphere(s);

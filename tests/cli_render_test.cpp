@@ -47,7 +47,7 @@ TEST(CliRender, StatsFileHasTheKeysScriptsCompare) {
     for (const auto& [kind, n] : stats["bytes_by_kind"].items()) bytes += n.get<size_t>();
     EXPECT_EQ(bytes, stats["bytes_scene"].get<size_t>());
     EXPECT_EQ(stats["counts"]["buildings"].get<size_t>() > 0, true);
-    // The streets' kinds (issue 19): counted, their bytes, and the stored ones' triangles.
+    // The streets' kinds: counted, their bytes, and the stored ones' triangles.
     for (const char* kind : {"roads", "junctions", "sidewalks", "water", "lamps"}) {
         EXPECT_GT(stats["counts"].value(kind, size_t(0)), 0u) << kind;
         EXPECT_GT(stats["bytes_by_kind"].value(kind, size_t(0)), 0u) << kind;

@@ -23,7 +23,7 @@ LinearImage furnace(const Material& material, Vec3f sky) {
     const float h = 200.0f;
     mesh.add({{-h, 0, -h}, {-h, 0, h}, {h, 0, h}}, {});
     mesh.add({{-h, 0, -h}, {h, 0, h}, {h, 0, -h}}, {});
-    Scene scene = Scene::build(mesh, {material});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {material}});
     scene.sky = Sky::uniform(sky);
     RenderSettings s;
     s.width = 24;

@@ -37,8 +37,8 @@ struct RoofRays {
 /// 100,000 rays down onto the roof from 3 m above it, steeply or grazing, aimed anywhere over the
 /// footprint, traced through both meshes of one building.
 RoofRays compareFromAbove(const CityMesh& x, const CityMesh& y, uint32_t seed) {
-    const Scene a = Scene::build(x.mesh, x.materials, x.walls);
-    const Scene b = Scene::build(y.mesh, y.materials, y.walls);
+    const Scene a = Scene::build({.mesh = x.mesh, .materials = x.materials, .walls = x.walls});
+    const Scene b = Scene::build({.mesh = y.mesh, .materials = y.materials, .walls = y.walls});
     const Bounds3f box = x.cityBounds;
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);

@@ -181,9 +181,10 @@ TEST(FacadeTiles, TiledCityShowsTheSameIds) {
     const Camera cameras[2] = {frameCity(mesh.cityBounds, 40.0f, aspect),
                                makeLookAtCamera(Vec3f{c.x - 0.2f * e.x, 12.0f, c.z + 0.25f * e.z},
                                                 Vec3f{c.x, 8.0f, c.z}, 50.0f, aspect)};
-    const Scene whole = Scene::build(mesh.mesh, mesh.materials, mesh.walls);
+    const Scene whole = Scene::build({.mesh = mesh.mesh, .materials = mesh.materials, .walls = mesh.walls});
     for (WallTileSize size : {WallTileSize{4, 4}, WallTileSize{2, 3}}) {
-        const Scene tiled = Scene::build(mesh.mesh, mesh.materials, mesh.walls, size);
+        const Scene tiled = Scene::build({.mesh = mesh.mesh, .materials = mesh.materials, .walls = mesh.walls,
+                                          .tileSize = size});
         EXPECT_GT(tiled.walls.size(), whole.walls.size());
         for (const Camera& camera : cameras) {
             const std::vector<uint32_t> a = renderIdsCpu(whole.view(), camera, settings);

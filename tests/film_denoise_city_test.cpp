@@ -2,7 +2,7 @@
 // street view), by day and by night, the MSE of a 4 spp render against a 256 spp one (the same seed:
 // it shares the 4 samples, which lowers the noisy MSE by about 3 %), denoised and not. MSE of the
 // tone-mapped image, what one sees (linear MSE is ruled by a few fireflies of sun glints). The
-// issue's goal is 3x lower; at this size (128 x 72) the filter reaches less than at 320 x 180
+// goal is 3x lower; at this size (128 x 72) the filter reaches less than at 320 x 180
 // (docs/film.md), so the test holds the factors it reaches (measured 1.73x by day, 1.72x by the
 // night of lamps and lit windows) with a margin: 1.5x.
 #include "citygen/city_mesher.h"

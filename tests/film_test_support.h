@@ -31,7 +31,7 @@ inline Scene wallScene(bool groundAndSun = false) {
     Material glossyGround{Vec3f{0.3f, 0.3f, 0.3f}, MaterialKind::Glossy, Vec3f{0.2f, 0.2f, 0.2f}, 40.0f};
     std::vector<GroundRecord> ground;
     if (groundAndSun) ground.push_back(GroundRecord::around(0.0f, 0.0f, 0.0f, 1));
-    Scene scene = Scene::build(mesh, {Material{kWallAlbedo}, glossyGround}, {}, {}, ground);
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{kWallAlbedo}, glossyGround}, .grounds = ground});
     scene.sky = Sky::uniform(Vec3f{0.8f, 0.9f, 1.0f});
     if (groundAndSun) scene.sun = makeSun(25.0f, 160.0f, 0.5f, Vec3f{3.0f, 2.8f, 2.5f});
     return scene;

@@ -39,7 +39,8 @@ Scene testScene() {
     TriangleMesh mesh;
     mesh.add({{20, 0, -5}, {30, 0, -5}, {20, 10, -5}}, TriangleInfo{3, 5, uint32_t(SurfacePart::Roof)});
     std::vector<Material> materials(12);
-    return Scene::build(mesh, materials, {testWall()}, {}, {GroundRecord::around(0, 0, 0, 11)});
+    return Scene::build({.mesh = mesh, .materials = materials, .walls = {testWall()},
+                         .grounds = {GroundRecord::around(0, 0, 0, 11)}});
 }
 
 void expectUnitFrame(const SurfaceHit& h) {

@@ -1,8 +1,8 @@
 // Rays aimed exactly at shared edges and vertices of closed meshes must never leak, through the 4-wide
 // BVH and through the wide one with its block test in every instruction set.
-#include "accel/bvh_build.h"
 #include "accel_test_scene.h"
-#include "geometry/triangle_scene.h"
+#include "bvh4/build.h"
+#include "bvh4/triangle_scene.h"
 #include "geometry/wide_triangle_scene.h"
 #include "scene/wide_triangle_scene_build.h"
 

@@ -20,7 +20,7 @@ TEST(GpuNightSky, MoonAndStarsMatchTheCpu) {
     const float h = 500.0f;
     mesh.add({{-h, 0, -h}, {-h, 0, h}, {h, 0, h}}, {0, 0});
     mesh.add({{-h, 0, -h}, {h, 0, h}, {h, 0, -h}}, {0, 0});
-    Scene scene = Scene::build(mesh, {Material{Vec3f{0.5f, 0.5f, 0.5f}}});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{Vec3f{0.5f, 0.5f, 0.5f}}}});
     scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     scene.sun = celestial.sun;
     scene.night = celestial.night;

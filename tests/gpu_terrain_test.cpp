@@ -49,7 +49,7 @@ TEST(GpuTerrain, HierarchyMarchOverAnFbmLandscapeMatchesTheCpuBitForBit) {
     p.kind = "fbm";
     p.size = 4000;
     const TerrainField field = buildTerrain(p, GeoOrigin{}, 0, 0, 0);
-    const Scene scene = Scene::build(TriangleMesh{}, terrainMaterials(), {}, {}, {}, {}, {}, field);
+    const Scene scene = Scene::build({.materials = terrainMaterials(), .terrain = field});
     expectSameHits(scene, raysOver(primBounds(field.record), 1000000));
 }
 

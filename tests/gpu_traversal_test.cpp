@@ -98,7 +98,7 @@ TEST(GpuTraversal, MillionRaysOverDowntownSanFranciscoMatchTheCpu) {
 
 TEST(GpuTraversal, EmptyBatchAndEmptySceneWork) {
     URBIS_SKIP_WITHOUT_GPU();
-    Scene scene = Scene::build(TriangleMesh{}, {Material{}});
+    Scene scene = Scene::build({.materials = {Material{}}});
     std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene);
     EXPECT_TRUE(gpu->intersect({}).empty());
     std::vector<SurfaceHit> hits = gpu->intersect({Ray{Vec3f{0, 1, 0}, Vec3f{0, -1, 0}}});

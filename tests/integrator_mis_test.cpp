@@ -69,7 +69,7 @@ TEST(IntegratorMis, PlaneUnderUniformSky) {
     const Vec3f albedo{0.8f, 0.5f, 0.25f}, sky{1.0f, 2.0f, 0.5f};
     TriangleMesh mesh;
     test::addSquare(mesh, 400.0f, 0.0f, 0);
-    Scene scene = Scene::build(mesh, {Material{albedo}});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{albedo}}});
     scene.sky = Sky::uniform(sky);
     const Camera camera = cameraFromHeading(Vec3f{0, 10, 0}, 30.0f, -60.0f, 40.0f, 1.0f);
     for (const Strategy& s : kStrategies) expectNear(renderMean(scene, s, camera, 24, 96), albedo * sky, 0.005f, s.name);
@@ -83,7 +83,7 @@ TEST(IntegratorMis, PlaneUnderEmittingSquare) {
     TriangleMesh mesh;
     test::addSquare(mesh, 400.0f, 0.0f, 0);
     test::addSquare(mesh, 2.0f * h, h, 1);
-    Scene scene = Scene::build(mesh, {Material{albedo}, test::emitter(radiance)});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{albedo}, test::emitter(radiance)}});
     scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     const float formFactor = float(4.0 * cornerFormFactor(h, h, h));
     // A narrow view of the plane's centre, where F changes by less than 1e-4.

@@ -119,7 +119,8 @@ TEST(LampIntersect, SceneTraceReportsTheLampKindObjectPartAndMaterial) {
     std::vector<LampRecord> lamps = {postTop(LampShape::Lantern, {0.0f, 0.0f, 0.0f}),
                                      postTop(LampShape::Globe, {4.0f, 0.0f, 0.0f})};
     lamps[1].object = 8;
-    const Scene scene = Scene::build({}, std::vector<Material>(24), {}, {}, {GroundRecord::around(0, 0, 0, 1)}, lamps);
+    const Scene scene = Scene::build({.materials = std::vector<Material>(24),
+                                      .grounds = {GroundRecord::around(0, 0, 0, 1)}, .lamps = lamps});
     const SceneView view = scene.view();
     EXPECT_TRUE(view.costlyLeaves);
     ASSERT_EQ(scene.lamps.size(), 2u);

@@ -34,8 +34,9 @@ Scene sceneOf(const std::vector<Lamp>& lamps, Representation r) {
     addLamps(lamps, options, mesh);
     EXPECT_EQ(mesh.counts["lamps"], lamps.size());
     EXPECT_EQ(mesh.lamps.empty(), r != Representation::Procedural);
-    Scene scene = Scene::build(mesh.mesh, streetMaterials(), {}, {},
-                               {GroundRecord::around(0, 0, 0, uint32_t(StreetMaterial::Sidewalk))}, mesh.lamps);
+    Scene scene = Scene::build({.mesh = mesh.mesh, .materials = streetMaterials(),
+                                .grounds = {GroundRecord::around(0, 0, 0, uint32_t(StreetMaterial::Sidewalk))},
+                                .lamps = mesh.lamps});
     scene.sun = makeSun(35.0f, 200.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     return scene;
 }

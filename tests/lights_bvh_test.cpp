@@ -109,7 +109,7 @@ TEST(LightBvh, NearLightIsLikelier) {
     TriangleMesh mesh;
     test::addSquare(mesh, 1.0f, 5.0f, 1);
     mesh.add({Vec3f{49.5f, 5, -0.5f}, Vec3f{50.5f, 5, 0.5f}, Vec3f{50.5f, 5, -0.5f}}, {1, 1});
-    Scene scene = Scene::build(mesh, {Material{}, test::emitter(Vec3f{10, 10, 10})});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{}, test::emitter(Vec3f{10, 10, 10})}});
     scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     buildLights(scene);
     const LightsView lights = scene.view().lights;

@@ -62,8 +62,9 @@ Scene lightsScene() {
     mesh.add({Vec3f{2, 1, 0}, Vec3f{3, 1, 0}, Vec3f{2, 2.5f, 0.5f}}, {1, 1});  // same material: one surface
     test::addSquare(mesh, 6.0f, 8.0f, 2);
     test::addSquare(mesh, 1.0f, -2.0f, 3);
-    Scene scene = Scene::build(mesh, {Material{}, test::emitter(Vec3f{4, 3, 2}), test::emitter(Vec3f{0.5f, 0.5f, 0.5f}),
-                                      test::emitter(Vec3f{20, 20, 20})});
+    Scene scene = Scene::build({.mesh = mesh,
+                                .materials = {Material{}, test::emitter(Vec3f{4, 3, 2}),
+                                              test::emitter(Vec3f{0.5f, 0.5f, 0.5f}), test::emitter(Vec3f{20, 20, 20})}});
     scene.sun = makeSun(30.0f, 60.0f, 2.0f, Vec3f{3, 3, 3});
     LightBuildOptions everyLight;
     everyLight.skyMinShare = 0.0f;  // the sky too, though the sun outshines it
@@ -74,7 +75,7 @@ Scene lightsScene() {
 } // namespace
 
 TEST(LightsChi2, SkyFromItsTable) {
-    Scene scene = Scene::build(TriangleMesh{}, {Material{}});
+    Scene scene = Scene::build({.materials = {Material{}}});
     buildLights(scene);
     const SceneView view = scene.view();
     ASSERT_NE(view.lights.skyLight, kNoLight);
@@ -225,7 +226,7 @@ TEST(LightsPdf, IntegratesToOne) {
 // The sky joins the light list where its table's power is at least half of the sun's and its own
 // together: under the default sun it is left to BSDF sampling, at night (no sun) it is light-sampled.
 TEST(LightsBuild, SkyJoinsWhereItOutshinesTheSun) {
-    Scene scene = Scene::build(TriangleMesh{}, {Material{}});
+    Scene scene = Scene::build({.materials = {Material{}}});
     scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     buildLights(scene);
     EXPECT_NE(scene.lights.sunLight, kNoLight);
@@ -239,7 +240,7 @@ TEST(LightsBuild, SkyJoinsWhereItOutshinesTheSun) {
 // Over an infinite ground plane nothing below the horizon can be seen from above it: the sky's
 // table leaves those directions to BSDF sampling (pdf 0) and integrates to one above.
 TEST(LightsPdf, SkyAboveTheGroundSamplesTheUpperHemisphere) {
-    Scene scene = Scene::build(TriangleMesh{}, {Material{}}, {}, {}, {GroundRecord::around(0.0f, 0.0f, 0.0f, 0)});
+    Scene scene = Scene::build({.materials = {Material{}}, .grounds = {GroundRecord::around(0.0f, 0.0f, 0.0f, 0)}});
     buildLights(scene);
     const SceneView view = scene.view();
     const LightRecord sky = lightRecord(view.lights, view.lights.skyLight);

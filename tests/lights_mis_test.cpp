@@ -21,7 +21,7 @@ TEST(LightsMis, PowerHeuristicLimits) {
 TEST(LightsMis, WeightsOfBothStrategiesSumToOne) {
     TriangleMesh mesh;
     test::addSquare(mesh, 2.0f, 3.0f, 1);
-    Scene scene = Scene::build(mesh, {Material{}, test::emitter(Vec3f{4, 3, 2})});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{}, test::emitter(Vec3f{4, 3, 2})}});
     scene.sun = makeSun(50.0f, 60.0f, 3.0f, Vec3f{3, 3, 3});
     LightBuildOptions everyLight;
     everyLight.skyMinShare = 0.0f;  // the sky too, though the sun outshines it

@@ -22,7 +22,7 @@ Scene moonlitPlane(Vec3f albedo, const Sun& moon) {
     const Vec3f a{-h, 0, -h}, b{h, 0, -h}, c{h, 0, h}, d{-h, 0, h};
     mesh.add({a, d, c}, {0, 0});
     mesh.add({a, c, b}, {0, 0});
-    Scene scene = Scene::build(mesh, {Material{albedo}});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{albedo}}});
     scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     scene.sun = Sun{};  // off
     scene.night.moon = moon;

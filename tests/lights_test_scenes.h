@@ -44,7 +44,7 @@ inline Scene manyEmitterScene(uint32_t count, float side, uint32_t seed = 7) {
         const float l = float(1 << k);  // material 1 + k, drawn less often the larger k
         materials.push_back(emitter(Vec3f{l, 0.8f * l, 0.6f * l}));
     }
-    Scene scene = Scene::build(mesh, materials);
+    Scene scene = Scene::build({.mesh = mesh, .materials = materials});
     scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     return scene;
 }

@@ -51,7 +51,7 @@ Scene roadScene(const std::vector<RoadSegment>& segments) {
         mesh.add({{a.x, 0, a.y}, {b.x, 0, b.y}, {c.x, 0, c.y}}, info);
         mesh.add({{a.x, 0, a.y}, {c.x, 0, c.y}, {d.x, 0, d.y}}, info);
     }
-    Scene scene = Scene::build(mesh, std::vector<Material>(3));
+    Scene scene = Scene::build({.mesh = mesh, .materials = std::vector<Material>(3)});
     scene.roadSegments = segments;
     return scene;
 }

@@ -247,7 +247,7 @@ Scene groundScene(const CloudLayer& layer, Vec3f centre) {
                 d = centre + Vec3f{-h, 0, h};
     mesh.add({a, d, c}, {0, 0});
     mesh.add({a, c, b}, {0, 0});
-    Scene scene = Scene::build(mesh, {Material{Vec3f{0.5f, 0.5f, 0.5f}}});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{Vec3f{0.5f, 0.5f, 0.5f}}}});
     scene.sky = Sky::uniform(Vec3f{});
     scene.sun = makeSun(kSunElevation, kSunAzimuth, 0.27f, Vec3f{3.0f, 3.0f, 3.0f});
     buildClouds(scene, layer);

@@ -15,7 +15,7 @@ namespace urbis::test {
 /// `mesh`, `walls` and `lamps` under a sun 10 degrees below the horizon and a black sky.
 inline Scene nightScene(const TriangleMesh& mesh, std::vector<Material> materials, const std::vector<WallRecord>& walls,
                         const std::vector<LampRecord>& lamps) {
-    Scene scene = Scene::build(mesh, std::move(materials), walls, {}, {}, lamps);
+    Scene scene = Scene::build({.mesh = mesh, .materials = std::move(materials), .walls = walls, .lamps = lamps});
     scene.sun = makeSun(-10.0f, 200.0f, 0.27f, {0.0f, 0.0f, 0.0f});   // set: no ground here hides it
     scene.sky = Sky::uniform({0, 0, 0});
     return scene;

@@ -9,7 +9,7 @@
 //   highways, lamps, trees: osmium tags-filter -R FILE w/highway | n/highway=street_lamp | n/natural=tree
 //   highwayAreas: of those highways, the closed ways with area=yes (first node = last node in
 //              the OPL of osmium tags-filter FILE w/highway): imported as pedestrian areas, not roads
-// The importer keeps a building when its centroid lies in the box (the rule), so
+// The importer keeps a building when its centroid lies in the box, so
 // its "inside" count is below `touching` by the buildings that straddle the border; the
 // tolerance below bounds that share per file (small boxes of big blocks lose the most).
 #include "osm/osm_import.h"

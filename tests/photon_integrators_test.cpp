@@ -62,7 +62,7 @@ Scene closedBoxScene(float rho, Vec3f emission) {
     test::addQuad(mesh, {-1, 9, -1}, {1, 9, -1}, {1, 9, 1}, {-1, 9, 1}, 1, 0);
     Material emitter{Vec3f{rho, rho, rho}};
     emitter.emission = emission;
-    Scene scene = Scene::build(mesh, {Material{Vec3f{rho, rho, rho}}, emitter});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{Vec3f{rho, rho, rho}}, emitter}});
     scene.sun = Sun{};
     scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     buildLights(scene);
@@ -277,7 +277,7 @@ TEST(PhotonBuffers, VisibilityFlagsAndPersistence) {
 // On the street canyon, the photon map and the photon buffers converge to the path tracer's image:
 // the image's mean luminance, and the mean relative error of 8 x 8 pixel blocks' luminance, against a
 // 1024 spp path-traced reference (64 passes of 50,000 photons: measured -1.7 % (map) and +2.4 %
-// (buffers) on the mean, the goal 2 % for the map and the stated 3 % for the buffers; blocks
+// (buffers) on the mean, the goal 2 % for the map and the stated 3 % for the buffers; blocks
 // 5.1 % and 6.9 %, mostly the photons' noise). The same seed gives the same images for any thread count.
 TEST(Photons, StreetCanyonConvergesToThePathTracer) {
     const Scene scene = test::streetCanyonScene();

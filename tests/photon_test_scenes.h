@@ -41,7 +41,8 @@ inline Scene streetCanyonScene() {
             const float h = 18.0f + 4.0f * float((k * 3 + (side > 0)) % 4);
             addBox(mesh, {x0, 0, z0}, {x0 + 20.0f, h, z0 + 22.0f}, 1, object++);
         }
-    Scene scene = Scene::build(mesh, {Material{Vec3f{0.4f, 0.4f, 0.4f}}, Material{Vec3f{0.7f, 0.65f, 0.6f}}});
+    Scene scene = Scene::build({.mesh = mesh,
+                                .materials = {Material{Vec3f{0.4f, 0.4f, 0.4f}}, Material{Vec3f{0.7f, 0.65f, 0.6f}}}});
     scene.sun = makeSun(35.0f, 100.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     scene.sky = Sky::uniform(Vec3f{0.25f, 0.3f, 0.4f});
     buildLights(scene);

@@ -22,7 +22,7 @@ Scene planetWithClouds(const PlanetShape& shape, double altitude, const CloudLay
     placement.lat = lat;
     placement.lon = lon;
     const PlanetRecord pl = makePlanetRecord(shape, placement, 270, 0);
-    Scene scene = Scene::build(TriangleMesh{}, planetMaterials({0.01f, 0.03f, 0.07f}), {}, {}, {}, {}, {}, {}, {pl});
+    Scene scene = Scene::build({.materials = planetMaterials({0.01f, 0.03f, 0.07f}), .planets = {pl}});
     buildClouds(scene, layer);
     return scene;
 }

@@ -36,7 +36,7 @@ TEST(Planet, SilhouetteFromOrbitIsACircleOfTheExpectedAngularRadius) {
     placement.altitude = 1.2e7;
     const uint32_t w = 400, h = 400;
     const PlanetRecord pl = makePlanetRecord(shape, placement, h, 0);
-    const Scene scene = Scene::build(TriangleMesh{}, planetMaterials({0.01f, 0.03f, 0.07f}), {}, {}, {}, {}, {}, {}, {pl});
+    const Scene scene = Scene::build({.materials = planetMaterials({0.01f, 0.03f, 0.07f}), .planets = {pl}});
     const SceneView view = scene.view();
     const Camera camera = planetCamera(placement, 1.0f);
     const double d = double(pl.centreDistance);

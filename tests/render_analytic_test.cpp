@@ -17,7 +17,7 @@ Scene planeScene(Vec3f albedo) {
     Vec3f a{-h, 0, -h}, b{h, 0, -h}, c{h, 0, h}, d{-h, 0, h};
     mesh.add({a, d, c}, {0, 0});
     mesh.add({a, c, b}, {0, 0});
-    return Scene::build(mesh, {Material{albedo}});
+    return Scene::build({.mesh = mesh, .materials = {Material{albedo}}});
 }
 
 /// Mean and largest relative deviation of every pixel's channel `c` from `expected`.
@@ -56,7 +56,8 @@ TEST(AnalyticRadiance, LambertianPlaneUnderUniformSky) {
 TEST(AnalyticRadiance, GroundPlaneUnderUniformSky) {
     Vec3f albedo{0.3f, 0.6f, 0.9f};
     Vec3f sky{2.0f, 1.0f, 0.5f};
-    Scene scene = Scene::build(TriangleMesh{}, {Material{albedo}}, {}, {}, {GroundRecord::around(0.0f, 0.0f, -3.0f, 0)});
+    Scene scene = Scene::build({.materials = {Material{albedo}},
+                                .grounds = {GroundRecord::around(0.0f, 0.0f, -3.0f, 0)}});
     scene.sky = Sky::uniform(sky);
     Camera camera = cameraFromHeading(Vec3f{1000, 40, -2000}, 10.0f, -30.0f, 40.0f, 32.0f / 24.0f);
     RenderCounters counters;
@@ -91,7 +92,7 @@ TEST(AnalyticRadiance, ShadowedPlaneSeesNoSun) {
     mesh.add({{-h, 0, -h}, {h, 0, h}, {h, 0, -h}}, {0, 0});
     mesh.add({{-r, top, -r}, {-r, top, r}, {r, top, r}}, {1, 1});  // a black roof straight overhead
     mesh.add({{-r, top, -r}, {r, top, r}, {r, top, -r}}, {1, 1});
-    Scene scene = Scene::build(mesh, {Material{albedo}, Material{Vec3f{0, 0, 0}}});
+    Scene scene = Scene::build({.mesh = mesh, .materials = {Material{albedo}, Material{Vec3f{0, 0, 0}}}});
     scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     scene.sun = makeSun(90.0f, 0.0f, 0.5f, Vec3f{5, 5, 5});
     // Looking straight down from under the roof at a small patch of ground.

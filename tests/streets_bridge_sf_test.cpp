@@ -86,7 +86,7 @@ TEST(StreetsBridgeSf, DecksLieAboveTheRoadsTheyCross) {
     const std::vector<Road> fitted = fitRoads(city, dropped);
     const std::vector<std::vector<float>> e = roadElevations(fitted);
     const StreetMesh streets = meshStreets(city, StreetOptions{});
-    const Scene scene = Scene::build(streets.mesh, streetMaterials());
+    const Scene scene = Scene::build({.mesh = streets.mesh, .materials = streetMaterials()});
     const std::vector<PlanCrossing> crossings = planCrossings(fitted, e);
     std::cout << crossings.size() << " crossings of a bridge over a ground road in plan\n";
     ASSERT_GT(crossings.size(), 20u) << "the extract's freeways cross many streets";

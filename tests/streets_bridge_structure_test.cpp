@@ -47,7 +47,7 @@ struct Overpass {
         roads[1].sidewalkRightWidth = 2.0f;
         options.firstObject = 7;
         meshBridges(roads, roadElevations(roads), options, out);
-        scene = Scene::build(out.mesh, streetMaterials());
+        scene = Scene::build({.mesh = out.mesh, .materials = streetMaterials()});
     }
 
     /// The first hit of a vertical ray at local (x, y) from height `from`, up or down.
@@ -140,7 +140,7 @@ TEST(StreetsBridgeStructure, ShortBridgeLandingOnJunctionsStillClearsTheRoadBelo
     }
     StreetMesh out;
     meshBridges(roads, e, StreetOptions{}, out);
-    const Scene scene = Scene::build(out.mesh, streetMaterials());
+    const Scene scene = Scene::build({.mesh = out.mesh, .materials = streetMaterials()});
     const SurfaceHit under =
         traceScene(scene.view(), Ray{worldFromStreet({15, 0}, kRoadLevel + 0.05), Vec3f{0, 1, 0}}, false);
     ASSERT_TRUE(under.valid());

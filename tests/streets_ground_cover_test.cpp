@@ -62,7 +62,8 @@ uint64_t droppedCount(const StreetMesh& out, const std::string& reason) {
 
 /// Each area drawn over a ground, as a scene with streetMaterials() from material 0.
 Scene sceneOf(const StreetMesh& out) {
-    return Scene::build(out.mesh, streetMaterials(), {}, {}, {GroundRecord::around(0, 0, 0, 0)});
+    return Scene::build({.mesh = out.mesh, .materials = streetMaterials(),
+                         .grounds = {GroundRecord::around(0, 0, 0, 0)}});
 }
 
 /// Every surface a vertical ray down through local (x, y) meets, top first.

@@ -57,7 +57,8 @@ struct Network {
         for (const Road& r : fitted) elevations.emplace_back(r.centerline.size(), 0.0f);
         meshStreetNetwork(city, fitted, elevations, StreetOptions{}, mesh);
         shapes = shapeJunctions(fitted, elevations);
-        scene = Scene::build(mesh.mesh, streetMaterials(), {}, {}, {GroundRecord::around(0, 0, 0, 0)});
+        scene = Scene::build({.mesh = mesh.mesh, .materials = streetMaterials(),
+                              .grounds = {GroundRecord::around(0, 0, 0, 0)}});
     }
 
     /// What a vertical ray down through plan point p meets first.

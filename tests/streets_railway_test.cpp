@@ -81,7 +81,7 @@ TEST(StreetsRailway, RailsAtTheGaugeOnTheBallast) {
         for (const TriangleInfo& info : out.mesh.info) EXPECT_EQ(info.object, 10u) << "after the parts meshed before: none";
         EXPECT_EQ(out.objects, 1u);
         // Seen from above: a rail's top over each rail, ballast between and beside them.
-        const Scene scene = Scene::build(out.mesh, streetMaterials());
+        const Scene scene = Scene::build({.mesh = out.mesh, .materials = streetMaterials()});
         const SurfaceHit onRail = down(scene, 50, (r.gauge + kRailWidth) / 2);
         ASSERT_TRUE(onRail.valid());
         EXPECT_EQ(onRail.part, SurfacePart::Rail);
@@ -130,7 +130,7 @@ TEST(StreetsRailway, BridgeCarriesTheTrackHigh) {
     bridge.bridge = true;
     bridge.layer = 1;
     const StreetMesh out = meshed({track(0, 300), bridge, track(500, 800)});
-    const Scene scene = Scene::build(out.mesh, streetMaterials());
+    const Scene scene = Scene::build({.mesh = out.mesh, .materials = streetMaterials()});
     const SurfaceHit rail = down(scene, 400, (1.435 + kRailWidth) / 2);
     ASSERT_TRUE(rail.valid());
     EXPECT_EQ(rail.part, SurfacePart::Rail);

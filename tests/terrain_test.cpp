@@ -52,7 +52,7 @@ std::vector<Ray> viewRays(const TerrainField& field, uint32_t w, uint32_t h) {
 
 std::vector<float> trace(TerrainField field, TerrainMarch march, const std::vector<Ray>& rays) {
     field.record.march = march;
-    const Scene scene = Scene::build(TriangleMesh{}, terrainMaterials(), {}, {}, {}, {}, {}, field);
+    const Scene scene = Scene::build({.materials = terrainMaterials(), .terrain = field});
     const SceneView view = scene.view();
     std::vector<float> t;
     for (const Ray& r : rays) {

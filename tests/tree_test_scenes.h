@@ -34,8 +34,8 @@ inline Scene groveScene(int rows, bool twin) {
     TriangleMesh mesh;
     if (twin)
         for (const TreeRecord& r : records) meshTree(r, mesh);
-    Scene scene = Scene::build(mesh, materials, {}, {}, {GroundRecord::around(0, 0, 0, 0)}, {},
-                               twin ? std::vector<TreeRecord>{} : records);
+    Scene scene = Scene::build({.mesh = mesh, .materials = materials, .grounds = {GroundRecord::around(0, 0, 0, 0)},
+                                .trees = twin ? std::vector<TreeRecord>{} : records});
     scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     return scene;
 }
@@ -44,7 +44,8 @@ inline Scene groveScene(int rows, bool twin) {
 inline Scene forestScene(const ForestRecord& forest) {
     std::vector<Material> materials{Material{Vec3f{0.2f, 0.2f, 0.18f}}};
     for (const Material& m : treeMaterials(TreeOptions{})) materials.push_back(m);
-    Scene scene = Scene::build(TriangleMesh{}, materials, {}, {}, {GroundRecord::around(0, 0, 0, 0)}, {}, {}, {}, {}, {forest});
+    Scene scene = Scene::build({.materials = materials, .grounds = {GroundRecord::around(0, 0, 0, 0)},
+                                .forests = {forest}});
     scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     return scene;
 }

@@ -26,8 +26,8 @@ inline Scene waterScene(const std::vector<Area>& areas, float elevation, float a
     options.water = water;
     StreetMesh out;
     meshGroundCover(city, options, out);
-    Scene scene = Scene::build(out.mesh, streetMaterials(water), {}, {},
-                               {GroundRecord::around(0, 0, 0, uint32_t(StreetMaterial::Grass))});
+    Scene scene = Scene::build({.mesh = out.mesh, .materials = streetMaterials(water),
+                                .grounds = {GroundRecord::around(0, 0, 0, uint32_t(StreetMaterial::Grass))}});
     scene.sun = makeSun(elevation, azimuth, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     buildLights(scene);
     return scene;

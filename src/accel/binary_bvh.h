@@ -25,8 +25,13 @@ struct BinaryBvh {
     std::vector<uint32_t> primOrder;
 };
 
-/// The binary tree of buildBvh (at least one primitive): binned SAH, parallel and deterministic,
-/// under 64 levels; a primitive of cost above one alone in its leaf (bvh_build.h).
+/// A binary tree over primitive bounds in world space (at least one primitive), by binned SAH over
+/// all three axes (I. Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies", 2007).
+/// Subtrees are built in parallel with TBB; the result is the same for any thread count. The tree
+/// stays under 64 levels (object-median splits from depth 32 on). `primCosts` weighs each
+/// primitive's intersection cost in units of options.intersectionCost (empty: 1 each); a primitive
+/// of cost above one (a procedural wall) gets a leaf of its own. Integers keep the parallel build
+/// deterministic.
 BinaryBvh buildBinaryBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options,
                          const std::vector<uint32_t>& primCosts);
 

@@ -1,11 +1,8 @@
-// Binned SAH construction of a 4-wide BVH over primitive bounds (host).
+// The options of the binned SAH build that every BVH over primitive bounds starts from (host):
+// buildBinaryBvh (binary_bvh.h), collapsed into the 8-wide BVH by buildWideBvh (wide_bvh_build.h).
 #pragma once
 
-#include "accel/bvh_node.h"
-#include "math/bounds.h"
-
 #include <cstdint>
-#include <vector>
 
 namespace urbis {
 
@@ -20,29 +17,5 @@ struct BvhBuildOptions {
     uint32_t leafGroupSize = 1;
     uint32_t parallelThreshold = 8192; ///< nodes with fewer primitives are built by one task
 };
-
-/// A BVH: flat 4-wide nodes (nodes[0] is the root) and the primitive order of its leaves.
-struct Bvh {
-    std::vector<BvhNode> nodes;
-    /// Leaves reference primitives [first, first+count) in primOrder order: callers reorder
-    /// their arrays by primOrder (sorted[i] = original[primOrder[i]]).
-    std::vector<uint32_t> primOrder;
-};
-
-/// Builds a BVH over primitive bounds in world space: a binary tree by binned SAH over all
-/// three axes (I. Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies",
-/// 2007), then collapsed into 4-wide nodes by opening the largest child first. Subtrees
-/// are built in parallel with TBB; the result is the same for any thread count. The tree
-/// stays under 64 levels (object-median splits from depth 32 on), so traversal stacks of
-/// kBvhStackSize never overflow. An empty input gives one empty node that no ray hits.
-/// `primCosts` weighs each primitive's intersection cost in units of intersectionCost (empty: 1
-/// each); a primitive of cost above one (a procedural wall) gets a leaf of its own. Integers keep
-/// the parallel build deterministic.
-Bvh buildBvh(const std::vector<Bounds3f>& primBounds, const BvhBuildOptions& options = {},
-             const std::vector<uint32_t>& primCosts = {});
-
-/// The SAH cost of a built BVH: traversalCost per node visited and intersectionCost per
-/// primitive tested, each weighted by its box's area relative to the root's.
-float sahCost(const Bvh& bvh, const BvhBuildOptions& options = {});
 
 } // namespace urbis

@@ -14,14 +14,14 @@ namespace urbis {
 struct WideBvh {
     std::vector<WideBvhNode> nodes;
     /// Leaves reference positions in primOrder: callers reorder their arrays by it (sorted[i] =
-    /// original[primOrder[i]]), as for Bvh.
+    /// original[primOrder[i]]).
     std::vector<uint32_t> primOrder;
 };
 
-/// Builds an 8-wide compressed BVH over primitive bounds in world space: buildBvh's binary tree
+/// Builds an 8-wide compressed BVH over primitive bounds in world space: buildBinaryBvh's binary tree
 /// (binned SAH, whose leaves weigh `primCosts` as there, a costly primitive alone in its leaf, marked
-/// kWideCostlyLeaf), collapsed as buildBvh's (collapseDepthFirst: the interior lane of largest area
-/// opened until there are kWideBvhWidth lanes); then each child box is quantised conservatively
+/// kWideCostlyLeaf), collapsed by collapseDepthFirst (the interior lane of largest area opened until
+/// there are kWideBvhWidth lanes); then each child box is quantised conservatively
 /// against its node's box (WideBvhNode). Deterministic for any thread count. The tree keeps the
 /// binary tree's depth bound (under 64 levels). Leaves hold at most 15 primitives (maxLeafSize is
 /// capped there). An empty input gives one empty node.

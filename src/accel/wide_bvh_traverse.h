@@ -11,16 +11,21 @@
 #include <cstddef>
 #include <cstdint>
 
+#if URBIS_HAVE_SSE
+#include <emmintrin.h>
+#endif
+
 namespace urbis {
 
 /// Entries of the traversal stack: the tree is under 64 levels; a node the traversal goes on into
 /// pushes at most kWideBvhWidth - 1 entries, one it leaves kWideBvhWidth.
 inline constexpr int kWideStackSize = 64 * (kWideBvhWidth - 1) + kWideBvhWidth;
 
-/// The exit distance's factor 1 + 2 gamma(3) of Ize's robust slab test (intersectLanes).
+/// The exit distance's factor 1 + 2 gamma(3) of the robust slab test ("Robust BVH Ray Traversal",
+/// T. Ize, JCGT 2(2), 2013): rounding never culls a box the ray touches.
 inline constexpr float kWideRobustScale = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
 
-/// Robust slab test (Ize 2013, as intersectLanes) of the ray against the decoded boxes of a wide
+/// Robust slab test (Ize 2013, kWideRobustScale) of the ray against the decoded boxes of a wide
 /// node's eight lanes, one lane at a time: writes each lane's entry distance and returns the mask of
 /// lanes whose box overlaps [tmin, tmax]. Unused lanes' boxes are empty (lo above hi) and never do.
 struct WideLanesScalar {

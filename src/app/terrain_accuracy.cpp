@@ -41,7 +41,7 @@ Camera accuracyCamera(const SceneDescription& d, const TerrainField& t) {
 void traceMarch(TerrainField field, TerrainMarch march, const std::vector<Ray>& rays, bool onGpu, int warmup, int repeats,
                 std::vector<float>& t, std::vector<float>& ms) {
     field.record.march = march;
-    const Scene scene = Scene::build(TriangleMesh{}, terrainMaterials(), {}, {}, {}, {}, {}, field);
+    const Scene scene = Scene::build({.materials = terrainMaterials(), .terrain = field});
     t.assign(rays.size(), -1.0f);
     if (onGpu) {
         std::unique_ptr<GpuScene> gpu = GpuScene::upload(scene, rays.size() * (sizeof(Ray) + sizeof(SurfaceHit)));

@@ -15,9 +15,11 @@ std::vector<GroundRecord> groundAround(const GroundRecord& ground, const Bounds3
 
 Scene buildCityScene(const CityMesh& mesh, WallTileSize tileSize, Vec3f groundCentre, const TerrainField& terrain) {
     const GroundRecord ground = GroundRecord::around(groundCentre.x, groundCentre.z, 0.0f, mesh.groundMaterial);
-    Scene scene = Scene::build(mesh.mesh, mesh.materials, mesh.walls, tileSize,
-                               terrain.empty() ? std::vector{ground} : groundAround(ground, primBounds(terrain.record)),
-                               mesh.lamps, mesh.trees, terrain, {}, mesh.forests);
+    const std::vector<GroundRecord> grounds =
+        terrain.empty() ? std::vector{ground} : groundAround(ground, primBounds(terrain.record));
+    Scene scene = Scene::build({.mesh = mesh.mesh, .materials = mesh.materials, .walls = mesh.walls,
+                                .tileSize = tileSize, .grounds = grounds, .lamps = mesh.lamps, .trees = mesh.trees,
+                                .terrain = terrain, .forests = mesh.forests});
     scene.roadSegments = mesh.roadSegments;
     return scene;
 }

@@ -35,8 +35,8 @@ struct WallPart {
     float panelSplit = 0;
 };
 
-/// WallPart::axis of a box.
-inline constexpr uint8_t kWallPartBox = 3;
+/// WallPart::axis of a quad facing u, v or w (its normal axis), and of a box.
+inline constexpr uint8_t kFacingU = 0, kFacingV = 1, kFacingW = 2, kWallPartBox = 3;
 /// The most parts a cell (or the margins) can have: a punched cell with a balcony, both sides.
 inline constexpr int kMaxCellParts = 22;
 
@@ -47,6 +47,17 @@ inline constexpr float kShopWindowChance = 0.8f;
 /// Half a curtain wall's mullion (the frame of each of its cells) and how far mullions reach out
 /// from the wall plane, metres.
 inline constexpr float kHalfMullion = 0.06f, kMullionDepth = 0.12f;
+/// A shop window's margins in its cell (metres): at either side, below it, and above it (at most
+/// kShopWindowTopShare of the floor's height).
+inline constexpr float kShopWindowSide = 0.25f, kShopWindowBottom = 0.35f, kShopWindowTop = 0.7f,
+                       kShopWindowTopShare = 0.25f;
+/// The room's inset from its cell (a thin inner wall), metres.
+inline constexpr float kRoomInset = 0.05f;
+/// A balcony (metres): its slab's thickness (a balcony door's sill stands on it), the railing's
+/// thickness and height above the slab, how far the slab reaches past the opening at either side and
+/// how near it comes to the cell's edge.
+inline constexpr float kBalconySlab = 0.15f, kRailingThickness = 0.05f, kRailingHeight = 1.0f, kBalconyReach = 0.6f,
+                       kBalconyEdgeGap = 0.1f;
 
 /// Which parts of a cell a ray can reach first. The glass (or curtain-wall panel) plane closes every
 /// cell: a ray in front of it can only reach the parts in front (frame, jambs, glass, balcony,
@@ -67,10 +78,10 @@ URBIS_HD inline void marginParts(const WallRecord& wall, CellParts& out) {
     const float u0 = wall.gridU, u1 = wall.gridU1();
     const float v0 = wall.gridV, v1 = wall.gridV1();
     const uint32_t m = wall.wallMaterial;
-    if (u0 > 0.0f) out.add({{0, 0, 0}, {u0, wall.height, 0}, 2, SurfacePart::Facade, m});
-    if (u1 < wall.width) out.add({{u1, 0, 0}, {wall.width, wall.height, 0}, 2, SurfacePart::Facade, m});
-    if (v0 > 0.0f) out.add({{u0, 0, 0}, {u1, v0, 0}, 2, SurfacePart::Facade, m});
-    if (v1 < wall.height) out.add({{u0, v1, 0}, {u1, wall.height, 0}, 2, SurfacePart::Facade, m});
+    if (u0 > 0.0f) out.add({{0, 0, 0}, {u0, wall.height, 0}, kFacingW, SurfacePart::Facade, m});
+    if (u1 < wall.width) out.add({{u1, 0, 0}, {wall.width, wall.height, 0}, kFacingW, SurfacePart::Facade, m});
+    if (v0 > 0.0f) out.add({{u0, 0, 0}, {u1, v0, 0}, kFacingW, SurfacePart::Facade, m});
+    if (v1 < wall.height) out.add({{u0, v1, 0}, {u1, wall.height, 0}, kFacingW, SurfacePart::Facade, m});
 }
 
 /// The hash that every choice of one cell draws from.
@@ -122,17 +133,17 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
         return c;
     }
     if (shopWindow) {
-        c.ou0 = c.u0 + 0.25f;
-        c.ou1 = c.u1 - 0.25f;
-        c.ov0 = c.v0 + 0.35f;
-        c.ov1 = c.v1 - fminf(0.7f, exactMul(0.25f, wall.floorHeight));
+        c.ou0 = c.u0 + kShopWindowSide;
+        c.ou1 = c.u1 - kShopWindowSide;
+        c.ov0 = c.v0 + kShopWindowBottom;
+        c.ov1 = c.v1 - fminf(kShopWindowTop, exactMul(kShopWindowTopShare, wall.floorHeight));
         return c;
     }
     c.ou0 = exactMulAdd(0.5f, wall.slotWidth - wall.windowWidth, c.u0);
     c.ou1 = c.ou0 + wall.windowWidth;
     c.ov1 = c.v0 + wall.sillHeight + wall.windowHeight;
     c.balcony = (wall.flags & kWallBalconies) && floor > 0 && choice < kBalconyChance;
-    c.ov0 = c.v0 + (c.balcony ? 0.15f : wall.sillHeight);
+    c.ov0 = c.v0 + (c.balcony ? kBalconySlab : wall.sillHeight);
     return c;
 }
 
@@ -142,15 +153,13 @@ URBIS_HD inline CellLayout cellLayout(const WallRecord& wall, uint32_t floor, ui
 // Each part is a recipe: which of the cell's coordinates (CellCoords) its corners take, its axis,
 // SurfacePart and material. One short piece of code builds every part from its recipe; a function
 // per part kind made the wall code too large for the GPU's instruction cache.
-// Recipes 0-21 make a punched cell as the triangle twin stores it: 0-3 the frame around the opening
-// in the wall plane, 4-7 its jambs, 8 the glass, 9-12 the room's front wall (the frame in the glass
-// plane), 13-17 the room (back, sides, floor, ceiling), 18-21 the balcony (slab, front and side
-// railings); 22-27 a curtain-wall cell's own parts (its room is the punched cell's). The
-// intersector tests fewer, larger parts of the same surfaces (kPartLists): the frame as one quad with
-// the opening as its hole (28), the glass plane as one quad with the glass in its opening (29), the
-// room as one box seen from inside (30), the window's recess as one box (its jambs and glass, 31);
-// a curtain cell's mullions as one box with the panel as its hole (32), the recess between them
-// (mullions and panel, 33) and its glass plane as one quad, the panel in its opening (34).
+// The recipes (PartRecipeId) from FrameLeft to RailingRight make a punched cell as the triangle twin
+// stores it; those from MullionLeft to CurtainGlass a curtain-wall cell's own parts (its room is the
+// punched cell's). The intersector tests fewer, larger parts of the same surfaces (kPartLists), those
+// from FrameWithHole on: the frame as one quad with the opening as its hole, the glass plane as one
+// quad with the glass in its opening, the room as one box seen from inside, the window's recess as one
+// box (its jambs and glass); a curtain cell's mullions as one box with the panel as its hole, the
+// recess between them (mullions and panel) and its glass plane as one quad, the panel in its opening.
 
 /// The coordinates (wall space, metres) that a cell's parts are made of: u, then v, then w values.
 enum CellCoord : uint8_t {
@@ -169,98 +178,151 @@ struct CellCoords {
 /// wall, a balcony's slab and railing around the opening, and the split between a curtain panel's
 /// spandrel and glass (a punched cell's opening is glass from the cell's bottom up).
 URBIS_HD inline CellCoords cellCoords(const WallRecord& wall, const CellLayout& c) {
-    constexpr float kInset = 0.05f, kSlab = 0.15f, kRail = 0.05f, kRailHeight = 1.0f;
     CellCoords k;
     float* at = k.at;
     at[U0] = c.u0, at[U1] = c.u1, at[OpeningU0] = c.ou0, at[OpeningU1] = c.ou1;
-    at[RoomU0] = c.u0 + kInset, at[RoomU1] = c.u1 - kInset;
-    at[BalconyU0] = fmaxf(c.u0 + 0.1f, c.ou0 - 0.6f), at[BalconyU1] = fminf(c.u1 - 0.1f, c.ou1 + 0.6f);
-    at[RailU0] = at[BalconyU0] + kRail, at[RailU1] = at[BalconyU1] - kRail;
+    at[RoomU0] = c.u0 + kRoomInset, at[RoomU1] = c.u1 - kRoomInset;
+    at[BalconyU0] = fmaxf(c.u0 + kBalconyEdgeGap, c.ou0 - kBalconyReach);
+    at[BalconyU1] = fminf(c.u1 - kBalconyEdgeGap, c.ou1 + kBalconyReach);
+    at[RailU0] = at[BalconyU0] + kRailingThickness, at[RailU1] = at[BalconyU1] - kRailingThickness;
     at[V0] = c.v0, at[V1] = c.v1, at[OpeningV0] = c.ov0, at[OpeningV1] = c.ov1;
-    at[RoomV0] = c.v0 + kInset, at[RoomV1] = c.v1 - kInset;
-    at[SlabTop] = c.v0 + kSlab, at[RailTop] = at[SlabTop] + kRailHeight;
+    at[RoomV0] = c.v0 + kRoomInset, at[RoomV1] = c.v1 - kRoomInset;
+    at[SlabTop] = c.v0 + kBalconySlab, at[RailTop] = at[SlabTop] + kRailingHeight;
     at[PanelSplit] = wall.style == WallStyle::Curtain ? c.v0 + wall.sillHeight : c.v0;
     at[WallPlane] = 0.0f, at[GlassPlane] = -wall.reveal, at[RoomBack] = -wall.depthBack;
-    at[BalconyFront] = wall.depthFront, at[RailBack] = wall.depthFront - kRail, at[MullionFront] = kMullionDepth;
+    at[BalconyFront] = wall.depthFront, at[RailBack] = wall.depthFront - kRailingThickness;
+    at[MullionFront] = kMullionDepth;
     return k;
 }
 
-/// A part as 42 bits: six CellCoords (5 bits each: lo u v w, hi u v w), the axis (2 bits: a quad's
-/// normal, or kWallPartBox), the SurfacePart (4 bits), the material (4 bits: 0 the wall's, 1 the
-/// room's, 2 + n FacadeMaterial n) and the PartOpening (2 bits) of a quad with the cell's opening.
+/// A part as 42 bits: six CellCoords (kCoordBits each: lo u v w, hi u v w), the axis (2 bits: a
+/// quad's normal, or kWallPartBox), the SurfacePart (4 bits), the material (4 bits: 0 the wall's, 1
+/// the room's, 2 + n FacadeMaterial n) and the PartOpening (2 bits) of a quad with the cell's opening.
 using PartRecipe = uint64_t;
 
-URBIS_HD constexpr PartRecipe partRecipe(CellCoord lu, CellCoord lv, CellCoord lw, CellCoord hu, CellCoord hv,
-                                         CellCoord hw, uint8_t axis, SurfacePart part, uint32_t material,
-                                         PartOpening opening = PartOpening::None) {
-    return PartRecipe(lu) | PartRecipe(lv) << 5 | PartRecipe(lw) << 10 | PartRecipe(hu) << 15 | PartRecipe(hv) << 20 |
-           PartRecipe(hw) << 25 | PartRecipe(axis) << 30 | PartRecipe(part) << 32 | PartRecipe(material) << 36 |
-           PartRecipe(opening) << 40;
+/// Where each field of a PartRecipe lies: corner coordinate i (lo u, v, w, then hi u, v, w) at bit
+/// i kCoordBits, then the axis, the SurfacePart, the material and the PartOpening; and their masks.
+inline constexpr int kCoordBits = 5, kAxisShift = 30, kPartShift = 32, kMaterialShift = 36, kOpeningShift = 40;
+inline constexpr uint32_t kCoordMask = 31u, kAxisMask = 3u, kPartMask = 15u, kMaterialMask = 15u, kOpeningMask = 3u;
+static_assert(6 * kCoordBits <= kAxisShift && kCellCoordCount <= (1 << kCoordBits), "a CellCoord fits its field");
+
+/// A part's two corners, each as the CellCoords of its u, v and w.
+struct PartCorner {
+    CellCoord u, v, w;
+};
+
+URBIS_HD constexpr PartRecipe partRecipe(PartCorner lo, PartCorner hi, uint8_t axis, SurfacePart part,
+                                         uint32_t material, PartOpening opening = PartOpening::None) {
+    const CellCoord corners[6] = {lo.u, lo.v, lo.w, hi.u, hi.v, hi.w};
+    PartRecipe recipe = 0;
+    for (int i = 0; i < 6; ++i) recipe |= PartRecipe(corners[i]) << (i * kCoordBits);
+    return recipe | PartRecipe(axis) << kAxisShift | PartRecipe(part) << kPartShift |
+           PartRecipe(material) << kMaterialShift | PartRecipe(opening) << kOpeningShift;
 }
 inline constexpr uint32_t kWallMaterialCode = 0, kRoomMaterialCode = 1;
 URBIS_HD constexpr uint32_t facadeMaterialCode(FacadeMaterial m) { return 2 + uint32_t(m); }
 
-/// Every part's recipe, numbered as above; a curtain-wall cell's parts are half mullions reaching from
-/// the glass plane out to MullionFront, a spandrel below the panel split and glass above it. A
-/// table, not a switch, so that lanes of a GPU warp at different parts load their recipes together
-/// instead of taking turns.
-URBIS_TABLE PartRecipe kPartRecipes[] = {
-    partRecipe(U0, V0, WallPlane, OpeningU0, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
-    partRecipe(OpeningU1, V0, WallPlane, U1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
-    partRecipe(OpeningU0, V0, WallPlane, OpeningU1, OpeningV0, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
-    partRecipe(OpeningU0, OpeningV1, WallPlane, OpeningU1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode),
-    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU0, OpeningV1, WallPlane, 0, SurfacePart::Jamb,
-               kWallMaterialCode),
-    partRecipe(OpeningU1, OpeningV0, GlassPlane, OpeningU1, OpeningV1, WallPlane, 0, SurfacePart::Jamb,
-               kWallMaterialCode),
-    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV0, WallPlane, 1, SurfacePart::Jamb,
-               kWallMaterialCode),
-    partRecipe(OpeningU0, OpeningV1, GlassPlane, OpeningU1, OpeningV1, WallPlane, 1, SurfacePart::Jamb,
-               kWallMaterialCode),
-    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV1, GlassPlane, 2, SurfacePart::Glass,
-               facadeMaterialCode(FacadeMaterial::Glass)),
-    partRecipe(U0, V0, GlassPlane, OpeningU0, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode),
-    partRecipe(OpeningU1, V0, GlassPlane, U1, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode),
-    partRecipe(OpeningU0, V0, GlassPlane, OpeningU1, OpeningV0, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode),
-    partRecipe(OpeningU0, OpeningV1, GlassPlane, OpeningU1, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode),
-    partRecipe(RoomU0, RoomV0, RoomBack, RoomU1, RoomV1, RoomBack, 2, SurfacePart::Room, kRoomMaterialCode),
-    partRecipe(RoomU0, RoomV0, RoomBack, RoomU0, RoomV1, GlassPlane, 0, SurfacePart::Room, kRoomMaterialCode),
-    partRecipe(RoomU1, RoomV0, RoomBack, RoomU1, RoomV1, GlassPlane, 0, SurfacePart::Room, kRoomMaterialCode),
-    partRecipe(RoomU0, RoomV0, RoomBack, RoomU1, RoomV0, GlassPlane, 1, SurfacePart::Room, kRoomMaterialCode),
-    partRecipe(RoomU0, RoomV1, RoomBack, RoomU1, RoomV1, GlassPlane, 1, SurfacePart::Room, kRoomMaterialCode),
-    partRecipe(BalconyU0, V0, WallPlane, BalconyU1, SlabTop, BalconyFront, kWallPartBox, SurfacePart::BalconySlab,
-               facadeMaterialCode(FacadeMaterial::Slab)),
-    partRecipe(BalconyU0, SlabTop, RailBack, BalconyU1, RailTop, BalconyFront, kWallPartBox, SurfacePart::Railing,
-               facadeMaterialCode(FacadeMaterial::Railing)),
-    partRecipe(BalconyU0, SlabTop, WallPlane, RailU0, RailTop, RailBack, kWallPartBox, SurfacePart::Railing,
-               facadeMaterialCode(FacadeMaterial::Railing)),
-    partRecipe(RailU1, SlabTop, WallPlane, BalconyU1, RailTop, RailBack, kWallPartBox, SurfacePart::Railing,
-               facadeMaterialCode(FacadeMaterial::Railing)),
-    partRecipe(U0, V0, GlassPlane, OpeningU0, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
-               facadeMaterialCode(FacadeMaterial::Mullion)),
-    partRecipe(OpeningU1, V0, GlassPlane, U1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
-               facadeMaterialCode(FacadeMaterial::Mullion)),
-    partRecipe(OpeningU0, V0, GlassPlane, OpeningU1, OpeningV0, MullionFront, kWallPartBox, SurfacePart::Mullion,
-               facadeMaterialCode(FacadeMaterial::Mullion)),
-    partRecipe(OpeningU0, OpeningV1, GlassPlane, OpeningU1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
-               facadeMaterialCode(FacadeMaterial::Mullion)),
-    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, PanelSplit, GlassPlane, 2, SurfacePart::Spandrel,
-               facadeMaterialCode(FacadeMaterial::Spandrel)),
-    partRecipe(OpeningU0, PanelSplit, GlassPlane, OpeningU1, OpeningV1, GlassPlane, 2, SurfacePart::Glass,
-               facadeMaterialCode(FacadeMaterial::Glass)),
-    partRecipe(U0, V0, WallPlane, U1, V1, WallPlane, 2, SurfacePart::Facade, kWallMaterialCode, PartOpening::Hole),
-    partRecipe(U0, V0, GlassPlane, U1, V1, GlassPlane, 2, SurfacePart::Room, kRoomMaterialCode, PartOpening::Glass),
-    partRecipe(RoomU0, RoomV0, RoomBack, RoomU1, RoomV1, GlassPlane, kWallPartBox, SurfacePart::Room,
-               kRoomMaterialCode),
-    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV1, WallPlane, kWallPartBox, SurfacePart::Jamb,
-               kWallMaterialCode, PartOpening::Recess),
-    partRecipe(U0, V0, GlassPlane, U1, V1, MullionFront, kWallPartBox, SurfacePart::Mullion,
-               facadeMaterialCode(FacadeMaterial::Mullion), PartOpening::Hole),
-    partRecipe(OpeningU0, OpeningV0, GlassPlane, OpeningU1, OpeningV1, MullionFront, kWallPartBox, SurfacePart::Mullion,
-               facadeMaterialCode(FacadeMaterial::Mullion), PartOpening::Recess),
-    partRecipe(U0, V0, GlassPlane, U1, V1, GlassPlane, 2, SurfacePart::Mullion, facadeMaterialCode(FacadeMaterial::Mullion),
-               PartOpening::Glass),
+/// The recipes, by name: kPartRecipes' rows in this order. Of a punched cell: the frame round the
+/// opening in the wall plane (left, right, below, above), its jambs (left, right, the sill, the
+/// head), the glass, the room's front wall (the frame in the glass plane), the room (back, sides,
+/// floor, ceiling), the balcony (slab, front and side railings); of a curtain-wall cell: its half
+/// mullions, the spandrel and the glass; then the intersector's larger parts.
+enum PartRecipeId : uint8_t {
+    FrameLeft, FrameRight, FrameBelow, FrameAbove,
+    JambLeft, JambRight, JambSill, JambHead,
+    WindowGlass,
+    FrontWallLeft, FrontWallRight, FrontWallBelow, FrontWallAbove,
+    RoomBackWall, RoomLeftWall, RoomRightWall, RoomFloor, RoomCeiling,
+    BalconySlab, RailingFront, RailingLeft, RailingRight,
+    MullionLeft, MullionRight, MullionBelow, MullionAbove,
+    CurtainSpandrel, CurtainGlass,
+    FrameWithHole, PunchedGlassPlane, RoomBox, WindowRecess,
+    MullionsWithHole, CurtainRecess, CurtainGlassPlane,
+    kPartRecipeCount
 };
+
+/// Every part's recipe, in PartRecipeId order; a curtain-wall cell's parts are half mullions
+/// reaching from the glass plane out to MullionFront, a spandrel below the panel split and glass above
+/// it. A table, not a switch, so that lanes of a GPU warp at different parts load their recipes
+/// together instead of taking turns.
+URBIS_TABLE PartRecipe kPartRecipes[] = {
+    // FrameLeft, FrameRight, FrameBelow, FrameAbove
+    partRecipe({U0, V0, WallPlane}, {OpeningU0, V1, WallPlane}, kFacingW, SurfacePart::Facade, kWallMaterialCode),
+    partRecipe({OpeningU1, V0, WallPlane}, {U1, V1, WallPlane}, kFacingW, SurfacePart::Facade, kWallMaterialCode),
+    partRecipe({OpeningU0, V0, WallPlane}, {OpeningU1, OpeningV0, WallPlane}, kFacingW, SurfacePart::Facade,
+               kWallMaterialCode),
+    partRecipe({OpeningU0, OpeningV1, WallPlane}, {OpeningU1, V1, WallPlane}, kFacingW, SurfacePart::Facade,
+               kWallMaterialCode),
+    // JambLeft, JambRight, JambSill, JambHead
+    partRecipe({OpeningU0, OpeningV0, GlassPlane}, {OpeningU0, OpeningV1, WallPlane}, kFacingU, SurfacePart::Jamb,
+               kWallMaterialCode),
+    partRecipe({OpeningU1, OpeningV0, GlassPlane}, {OpeningU1, OpeningV1, WallPlane}, kFacingU, SurfacePart::Jamb,
+               kWallMaterialCode),
+    partRecipe({OpeningU0, OpeningV0, GlassPlane}, {OpeningU1, OpeningV0, WallPlane}, kFacingV, SurfacePart::Jamb,
+               kWallMaterialCode),
+    partRecipe({OpeningU0, OpeningV1, GlassPlane}, {OpeningU1, OpeningV1, WallPlane}, kFacingV, SurfacePart::Jamb,
+               kWallMaterialCode),
+    // WindowGlass
+    partRecipe({OpeningU0, OpeningV0, GlassPlane}, {OpeningU1, OpeningV1, GlassPlane}, kFacingW, SurfacePart::Glass,
+               facadeMaterialCode(FacadeMaterial::Glass)),
+    // FrontWallLeft, FrontWallRight, FrontWallBelow, FrontWallAbove
+    partRecipe({U0, V0, GlassPlane}, {OpeningU0, V1, GlassPlane}, kFacingW, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe({OpeningU1, V0, GlassPlane}, {U1, V1, GlassPlane}, kFacingW, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe({OpeningU0, V0, GlassPlane}, {OpeningU1, OpeningV0, GlassPlane}, kFacingW, SurfacePart::Room,
+               kRoomMaterialCode),
+    partRecipe({OpeningU0, OpeningV1, GlassPlane}, {OpeningU1, V1, GlassPlane}, kFacingW, SurfacePart::Room,
+               kRoomMaterialCode),
+    // RoomBackWall, RoomLeftWall, RoomRightWall, RoomFloor, RoomCeiling
+    partRecipe({RoomU0, RoomV0, RoomBack}, {RoomU1, RoomV1, RoomBack}, kFacingW, SurfacePart::Room, kRoomMaterialCode),
+    partRecipe({RoomU0, RoomV0, RoomBack}, {RoomU0, RoomV1, GlassPlane}, kFacingU,
+               SurfacePart::Room, kRoomMaterialCode),
+    partRecipe({RoomU1, RoomV0, RoomBack}, {RoomU1, RoomV1, GlassPlane}, kFacingU,
+               SurfacePart::Room, kRoomMaterialCode),
+    partRecipe({RoomU0, RoomV0, RoomBack}, {RoomU1, RoomV0, GlassPlane}, kFacingV,
+               SurfacePart::Room, kRoomMaterialCode),
+    partRecipe({RoomU0, RoomV1, RoomBack}, {RoomU1, RoomV1, GlassPlane}, kFacingV,
+               SurfacePart::Room, kRoomMaterialCode),
+    // BalconySlab, RailingFront, RailingLeft, RailingRight
+    partRecipe({BalconyU0, V0, WallPlane}, {BalconyU1, SlabTop, BalconyFront}, kWallPartBox, SurfacePart::BalconySlab,
+               facadeMaterialCode(FacadeMaterial::Slab)),
+    partRecipe({BalconyU0, SlabTop, RailBack}, {BalconyU1, RailTop, BalconyFront}, kWallPartBox, SurfacePart::Railing,
+               facadeMaterialCode(FacadeMaterial::Railing)),
+    partRecipe({BalconyU0, SlabTop, WallPlane}, {RailU0, RailTop, RailBack}, kWallPartBox, SurfacePart::Railing,
+               facadeMaterialCode(FacadeMaterial::Railing)),
+    partRecipe({RailU1, SlabTop, WallPlane}, {BalconyU1, RailTop, RailBack}, kWallPartBox, SurfacePart::Railing,
+               facadeMaterialCode(FacadeMaterial::Railing)),
+    // MullionLeft, MullionRight, MullionBelow, MullionAbove
+    partRecipe({U0, V0, GlassPlane}, {OpeningU0, V1, MullionFront}, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion)),
+    partRecipe({OpeningU1, V0, GlassPlane}, {U1, V1, MullionFront}, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion)),
+    partRecipe({OpeningU0, V0, GlassPlane}, {OpeningU1, OpeningV0, MullionFront}, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion)),
+    partRecipe({OpeningU0, OpeningV1, GlassPlane}, {OpeningU1, V1, MullionFront}, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion)),
+    // CurtainSpandrel, CurtainGlass
+    partRecipe({OpeningU0, OpeningV0, GlassPlane}, {OpeningU1, PanelSplit, GlassPlane}, kFacingW,
+               SurfacePart::Spandrel, facadeMaterialCode(FacadeMaterial::Spandrel)),
+    partRecipe({OpeningU0, PanelSplit, GlassPlane}, {OpeningU1, OpeningV1, GlassPlane}, kFacingW, SurfacePart::Glass,
+               facadeMaterialCode(FacadeMaterial::Glass)),
+    // FrameWithHole, PunchedGlassPlane, RoomBox, WindowRecess
+    partRecipe({U0, V0, WallPlane}, {U1, V1, WallPlane}, kFacingW, SurfacePart::Facade, kWallMaterialCode,
+               PartOpening::Hole),
+    partRecipe({U0, V0, GlassPlane}, {U1, V1, GlassPlane}, kFacingW, SurfacePart::Room, kRoomMaterialCode,
+               PartOpening::Glass),
+    partRecipe({RoomU0, RoomV0, RoomBack}, {RoomU1, RoomV1, GlassPlane}, kWallPartBox, SurfacePart::Room,
+               kRoomMaterialCode),
+    partRecipe({OpeningU0, OpeningV0, GlassPlane}, {OpeningU1, OpeningV1, WallPlane}, kWallPartBox, SurfacePart::Jamb,
+               kWallMaterialCode, PartOpening::Recess),
+    // MullionsWithHole, CurtainRecess, CurtainGlassPlane
+    partRecipe({U0, V0, GlassPlane}, {U1, V1, MullionFront}, kWallPartBox, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion), PartOpening::Hole),
+    partRecipe({OpeningU0, OpeningV0, GlassPlane}, {OpeningU1, OpeningV1, MullionFront}, kWallPartBox,
+               SurfacePart::Mullion, facadeMaterialCode(FacadeMaterial::Mullion), PartOpening::Recess),
+    partRecipe({U0, V0, GlassPlane}, {U1, V1, GlassPlane}, kFacingW, SurfacePart::Mullion,
+               facadeMaterialCode(FacadeMaterial::Mullion), PartOpening::Glass),
+};
+static_assert(sizeof(kPartRecipes) / sizeof(kPartRecipes[0]) == kPartRecipeCount, "a recipe per PartRecipeId");
 
 /// The recipes of each list of parts that cellPart walks, by wall style and CellSide: a punched
 /// cell's front (the frame with its hole, the recess; then a balcony's four boxes), its back (the
@@ -268,12 +330,21 @@ URBIS_TABLE PartRecipe kPartRecipes[] = {
 /// mullions with their hole, the recess), back (the glass plane, the room) and both sides as the
 /// twin stores them.
 URBIS_TABLE uint8_t kPartLists[] = {
-    28, 31, 18, 19, 20, 21,                                                           // punched, front
-    29, 30,                                                                           // punched, back
-    0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21,   // punched, both
-    32, 33,                                                                           // curtain, front
-    34, 30,                                                                           // curtain, back
-    22, 23, 24, 25, 26, 27, 13, 14, 15, 16, 17,                                       // curtain, both
+    // punched, front
+    FrameWithHole, WindowRecess, BalconySlab, RailingFront, RailingLeft, RailingRight,
+    // punched, back
+    PunchedGlassPlane, RoomBox,
+    // punched, both
+    FrameLeft, FrameRight, FrameBelow, FrameAbove, JambLeft, JambRight, JambSill, JambHead, WindowGlass,
+    FrontWallLeft, FrontWallRight, FrontWallBelow, FrontWallAbove, RoomBackWall, RoomLeftWall, RoomRightWall, RoomFloor,
+    RoomCeiling, BalconySlab, RailingFront, RailingLeft, RailingRight,
+    // curtain, front
+    MullionsWithHole, CurtainRecess,
+    // curtain, back
+    CurtainGlassPlane, RoomBox,
+    // curtain, both
+    MullionLeft, MullionRight, MullionBelow, MullionAbove, CurtainSpandrel, CurtainGlass, RoomBackWall, RoomLeftWall,
+    RoomRightWall, RoomFloor, RoomCeiling,
 };
 
 /// The lengths of kPartLists' lists (a balcony adds kBalconyParts to a punched cell's front and
@@ -290,14 +361,14 @@ static_assert(kMaxCellParts == kPunchedBothParts + kBalconyParts, "the longest l
 /// The part that `recipe` makes of a cell with coordinates `k`.
 URBIS_HD inline WallPart partFromRecipe(const WallRecord& wall, const CellLayout& c, const CellCoords& k,
                                        PartRecipe recipe) {
-    const auto coord = [&](int shift) { return k.at[(recipe >> shift) & 31u]; };
-    const uint32_t material = uint32_t(recipe >> 36) & 15u;
+    const auto coord = [&](int corner) { return k.at[(recipe >> (corner * kCoordBits)) & kCoordMask]; };
+    const uint32_t material = uint32_t(recipe >> kMaterialShift) & kMaterialMask;
     WallPart p;
-    p.lo = {coord(0), coord(5), coord(10)};
-    p.hi = {coord(15), coord(20), coord(25)};
-    p.axis = uint8_t((recipe >> 30) & 3u);
-    p.part = SurfacePart((recipe >> 32) & 15u);
-    p.opening = PartOpening((recipe >> 40) & 3u);
+    p.lo = {coord(0), coord(1), coord(2)};
+    p.hi = {coord(3), coord(4), coord(5)};
+    p.axis = uint8_t((recipe >> kAxisShift) & kAxisMask);
+    p.part = SurfacePart((recipe >> kPartShift) & kPartMask);
+    p.opening = PartOpening((recipe >> kOpeningShift) & kOpeningMask);
     if (p.opening != PartOpening::None) {
         p.openingLo = {k.at[OpeningU0], k.at[OpeningV0]};
         p.openingHi = {k.at[OpeningU1], k.at[OpeningV1]};

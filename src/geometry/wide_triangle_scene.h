@@ -10,10 +10,12 @@
 
 namespace urbis {
 
-/// traceTriangles (triangle_scene.h) over a WideTriangleSceneView, its node lanes tested by `Lanes`
+/// The closest triangle hit with ray.tmin < t < ray.tmax (anyHit false), or the first one found in
+/// any order (anyHit true: a shadow ray), in world space, over a WideTriangleSceneView: watertight
+/// (Woop et al. 2013) and robust in the BVH (Ize 2013). Its node lanes are tested by `Lanes`
 /// (WideLanesScalar, WideLanesSse; WideLanesAvx2 in traceWideTrianglesAvx2) and its leaves' blocks by
 /// `Leaf` (TriangleBlockScalar, TriangleBlockSse): the same hits, bit for bit, for each. Hit::prim
-/// indexes view.triangles (leaf order).
+/// indexes view.triangles (leaf order); invalid if nothing is hit.
 template <typename Lanes, typename Leaf>
 URBIS_HD inline Hit traceWideTriangles(const WideTriangleSceneView& view, Ray ray, bool anyHit) {
     const BvhRay br(ray);

@@ -115,7 +115,7 @@ Camera planetCamera(const PlanetCameraPlacement& placement, float aspect) {
 }
 
 Scene buildPlanetScene(const PlanetRecord& pl, Vec3f oceanColour, const Sun& sun, const NightSky& night, const Sky& sky) {
-    Scene scene = Scene::build(TriangleMesh{}, planetMaterials(oceanColour), {}, {}, {}, {}, {}, {}, {pl});
+    Scene scene = Scene::build({.materials = planetMaterials(oceanColour), .planets = {pl}});
     scene.sun = sun;
     scene.night = night;
     scene.sky = sky;

@@ -1,8 +1,7 @@
 // A triangle-only BVH as a view (host+device POD): what tests and benchmarks of the triangle
-// traversal alone take (geometry/triangle_scene.h).
+// traversal alone take (geometry/wide_triangle_scene.h).
 #pragma once
 
-#include "accel/bvh_node.h"
 #include "accel/wide_bvh_node.h"
 #include "scene/triangle.h"
 #include "scene/triangle_block.h"
@@ -11,17 +10,9 @@
 
 namespace urbis {
 
-/// Non-owning view of a triangle BVH: nodes from buildBvh over the triangles' bounds and the
-/// triangles reordered by its primOrder (triangles[i] = original[primOrder[i]]).
-struct TriangleSceneView {
-    const BvhNode* nodes;
-    const Triangle* triangles;
-    uint32_t triangleCount;
-};
-
-/// The same over an 8-wide compressed BVH (buildWideTriangleScene): nodes from buildWideBvh whose
-/// leaves address blocks (groupWideLeaves), the blocks, and the triangles in the BVH's primOrder, which
-/// the blocks' prim indices and Hit::prim index.
+/// Non-owning view of a triangle-only 8-wide compressed BVH (buildWideTriangleScene): nodes from
+/// buildWideBvh whose leaves address blocks (groupWideLeaves), the blocks, and the triangles in the
+/// BVH's primOrder, which the blocks' prim indices and Hit::prim index.
 struct WideTriangleSceneView {
     const WideBvhNode* nodes;
     const TriangleBlock* blocks;

@@ -75,13 +75,17 @@ bool crossEdges(const NodeEnd& i, double hi, const NodeEnd& j, double hj, double
     return crossLines(onEdge(i, 0, hi), i.d, onEdge(j, 0, -hj), j.d, kMinSine, s, u);
 }
 
-double& trimOf(const NodeEnd& e, std::vector<double>& trimStart, std::vector<double>& trimEnd) {
-    return (e.atEnd ? trimEnd : trimStart)[e.road];
-}
+/// How far each road is cut back at its first and at its last point (m).
+struct Trims {
+    std::vector<double> start, end;
+
+    double& of(const NodeEnd& e) { return (e.atEnd ? end : start)[e.road]; }
+    double of(const NodeEnd& e) const { return (e.atEnd ? end : start)[e.road]; }
+};
 
 /// Sorts a node's ends by angle round it and measures the gaps between neighbours: each end's trim
 /// reaches the farthest crossing of its edges with its neighbours' (none at a mitre or a path's cut).
-void measureGaps(Node& node, std::vector<double>& trimStart, std::vector<double>& trimEnd) {
+void measureGaps(Node& node, Trims& trims) {
     for (NodeEnd& e : node.ends) {
         if (node.ends.size() >= 3) {
             Vec2d along;
@@ -98,7 +102,7 @@ void measureGaps(Node& node, std::vector<double>& trimStart, std::vector<double>
     });
     const size_t count = node.ends.size();
     if (count < 2 || node.onCarriageway) {
-        for (const NodeEnd& e : node.ends) trimOf(e, trimStart, trimEnd) = node.pathTrim;
+        for (const NodeEnd& e : node.ends) trims.of(e) = node.pathTrim;
         return;
     }
     node.gaps.assign(count, {});
@@ -119,8 +123,8 @@ void measureGaps(Node& node, std::vector<double>& trimStart, std::vector<double>
         // sidewalks stop with an end face instead.
         if (length(i.origin) + length(j.origin) > 0 && !g.inner && g.angle < std::numbers::pi - kStraightGap)
             g.corner = false;
-        double& ti = trimOf(i, trimStart, trimEnd);
-        double& tj = trimOf(j, trimStart, trimEnd);
+        double& ti = trims.of(i);
+        double& tj = trims.of(j);
         if (g.inner) ti = std::max(ti, g.s), tj = std::max(tj, g.u);
         if (g.outer) ti = std::max(ti, g.so), tj = std::max(tj, g.uo);
         // A sidewalk that no corner continues stops where it would run onto the neighbour's carriageway.
@@ -135,7 +139,7 @@ void measureGaps(Node& node, std::vector<double>& trimStart, std::vector<double>
     double widest = 0;
     for (const NodeEnd& e : node.ends) widest = std::max(widest, e.half + std::max(e.walkLeft, e.walkRight));
     for (const NodeEnd& e : node.ends) {
-        double& t = trimOf(e, trimStart, trimEnd);
+        double& t = trims.of(e);
         t = std::min(t, kMaxTrimHalves * widest);
     }
 }
@@ -161,7 +165,7 @@ struct Corridor {
 /// cross) become one: the short roads between them are left out and the others meet round the middle.
 void mergeCloseJunctions(const std::vector<Road>& roads, const std::vector<double>& lengths, std::vector<Node>& nodes,
                          const std::unordered_map<PointKey, uint32_t, PointKeyHash>& nodeAt,
-                         std::vector<double>& trimStart, std::vector<double>& trimEnd, std::vector<bool>& consumed) {
+                         Trims& trims, std::vector<bool>& consumed) {
     std::vector<uint32_t> parent(nodes.size());
     for (uint32_t n = 0; n < nodes.size(); ++n) parent[n] = n;
     const auto nodesOf = [&](uint32_t r) {
@@ -172,7 +176,8 @@ void mergeCloseJunctions(const std::vector<Road>& roads, const std::vector<doubl
         if (consumed[r] || isPath(roads[r].highway)) continue;
         const auto [a, b] = nodesOf(r);
         if (a == b || nodes[a].ends.size() < 3 || nodes[b].ends.size() < 3) continue;
-        if (trimStart[r] + trimEnd[r] <= std::min(lengths[r] * (1.0 - kKeptShare), lengths[r] - kMinKept)) continue;
+        const double kept = std::min(lengths[r] * (1.0 - kKeptShare), lengths[r] - kMinKept);
+        if (trims.start[r] + trims.end[r] <= kept) continue;
         const uint32_t ra = rootOf(parent, a), rb = rootOf(parent, b);
         if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
         merged = true;
@@ -197,16 +202,233 @@ void mergeCloseJunctions(const std::vector<Road>& roads, const std::vector<doubl
                 }
                 e.origin = shift;
                 for (Vec2d& p : e.line) p = p + shift;
-                trimOf(e, trimStart, trimEnd) = 0;
+                trims.of(e) = 0;
                 group.ends.push_back(std::move(e));
             }
             nodes[m].ends.clear();
         }
-        measureGaps(group, trimStart, trimEnd);
+        measureGaps(group, trims);
         nodes[root] = std::move(group);
     }
 }
 
+/// The street graph: the nodes, in the order the roads first reach them, found by point (carriageways'
+/// and paths' apart), and the carriageways through each point of their centerlines.
+struct StreetGraph {
+    std::vector<Node> nodes;
+    std::unordered_map<PointKey, uint32_t, PointKeyHash> nodeAt[2];   ///< by isPath
+    std::unordered_map<PointKey, std::vector<Corridor>, PointKeyHash> carriagewayAt;
+    std::vector<double> lengths;   ///< per road, of its centerline (m)
+};
+
+/// Each road's two ends at their nodes; a road with no length is consumed.
+StreetGraph collectNodes(const std::vector<Road>& roads, std::vector<bool>& consumed) {
+    StreetGraph graph;
+    graph.lengths.resize(roads.size());
+    for (uint32_t r = 0; r < roads.size(); ++r) {
+        const Road& road = roads[r];
+        graph.lengths[r] = polylineLength(road.centerline);
+        if (road.centerline.size() < 2 || !(graph.lengths[r] > 0)) {
+            consumed[r] = true;
+            continue;
+        }
+        const bool path = isPath(road.highway);
+        if (!path)
+            for (size_t i = 0; i < road.centerline.size(); ++i) {
+                const Vec2d a = road.centerline[i == 0 ? 0 : i - 1], b = road.centerline[i == 0 ? 1 : i];
+                graph.carriagewayAt[PointKey(road.centerline[i])].push_back(
+                    {(b - a) * (1.0 / std::max(length(b - a), 1e-12)),
+                     road.width * 0.5 + std::max(road.sidewalkLeftWidth, road.sidewalkRightWidth)});
+            }
+        for (const bool atEnd : {false, true}) {
+            NodeEnd e;
+            e.road = r;
+            e.atEnd = atEnd;
+            e.line = road.centerline;
+            if (atEnd) std::reverse(e.line.begin(), e.line.end());
+            pointAlong(e.line, 0.0, e.d);
+            e.n = perpLeft(e.d);
+            e.half = road.width * 0.5;
+            e.length = graph.lengths[r];
+            e.walkLeft = atEnd ? road.sidewalkRightWidth : road.sidewalkLeftWidth;
+            e.walkRight = atEnd ? road.sidewalkLeftWidth : road.sidewalkRightWidth;
+            const Vec2d p = e.line.front();
+            const auto [it, added] = graph.nodeAt[path].emplace(PointKey(p), uint32_t(graph.nodes.size()));
+            if (added) {
+                graph.nodes.emplace_back();
+                graph.nodes.back().point = p;
+                graph.nodes.back().path = path;
+            }
+            graph.nodes[it->second].ends.push_back(std::move(e));
+        }
+    }
+    return graph;
+}
+
+/// Makes a node's lines node-relative (crossings keep their precision), sets how far a path node on a
+/// carriageway cuts its paths back, and measures its gaps (measureGaps).
+void measureNode(Node& node, const StreetGraph& graph, Trims& trims) {
+    for (NodeEnd& e : node.ends)
+        for (Vec2d& p : e.line) p = p - node.point;
+    if (node.path)
+        if (const auto it = graph.carriagewayAt.find(PointKey(node.point)); it != graph.carriagewayAt.end()) {
+            node.onCarriageway = true;
+            for (const NodeEnd& e : node.ends)
+                for (const Corridor& c : it->second) {
+                    const double sine = std::max(std::fabs(cross(e.d, c.d)), kMinPathSine);
+                    node.pathTrim = std::max(node.pathTrim, c.half / sine + kPathClearance);
+                }
+        }
+    measureGaps(node, trims);
+}
+
+/// Scales both trims of a road down to leave some of it (kKeptShare), and writes them to its ends; a
+/// path that its cuts eat up is consumed.
+void fitTrims(const std::vector<Road>& roads, const std::vector<double>& lengths, Trims& trims, StreetJunctions& out) {
+    for (uint32_t r = 0; r < roads.size(); ++r) {
+        if (out.consumed[r]) continue;
+        const double sum = trims.start[r] + trims.end[r], room = lengths[r] * (1.0 - kKeptShare);
+        if (sum > room) {
+            if (isPath(roads[r].highway)) out.consumed[r] = true;
+            trims.start[r] *= room / sum;
+            trims.end[r] *= room / sum;
+        }
+        out.starts[r].trim = trims.start[r];
+        out.ends[r].trim = trims.end[r];
+    }
+}
+
+/// The corners of a node's trimmed ends as the node sees them (left = counter-clockwise), node-relative,
+/// and whether each side's sidewalk goes on round a corner.
+struct NodeCorners {
+    std::vector<Vec2d> left, right, leftOuter, rightOuter;
+    std::vector<bool> leftGoesOn, rightGoesOn;
+};
+
+/// Each end's corners where its trim cuts it: square to the road there, or in a junction square to the
+/// chord the gaps measured.
+NodeCorners trimmedCorners(const Node& node, const Trims& trims) {
+    const size_t count = node.ends.size();
+    NodeCorners c{std::vector<Vec2d>(count), std::vector<Vec2d>(count), std::vector<Vec2d>(count),
+                  std::vector<Vec2d>(count), std::vector<bool>(count, false), std::vector<bool>(count, false)};
+    for (size_t k = 0; k < count; ++k) {
+        const NodeEnd& e = node.ends[k];
+        const double t = trims.of(e);
+        Vec2d d;
+        Vec2d p = pointAlong(e.line, t, d), n = perpLeft(d);
+        if (count >= 3 && !node.onCarriageway) p = onEdge(e, t, 0), n = e.n;   // on the chord the gaps measured
+        c.left[k] = p + n * e.half;
+        c.right[k] = p - n * e.half;
+        c.leftOuter[k] = p + n * (e.half + e.walkLeft);
+        c.rightOuter[k] = p - n * (e.half + e.walkRight);
+    }
+    return c;
+}
+
+/// A mitre (a node of two roads): each side's corner is where the two edges cross (capped), shared by
+/// both roads.
+void mitreCorners(const Node& node, NodeCorners& c) {
+    for (size_t k = 0; k < 2; ++k) {
+        const size_t j = 1 - k;
+        const NodeEnd &a = node.ends[k], &b = node.ends[j];
+        const Gap& g = node.gaps[k];
+        const double limit = kMitreLimit * std::max(a.half, b.half);
+        const auto mitre = [&](bool crossed, double s, double offsetA, double offsetB, double cap) {
+            Vec2d p = crossed ? onEdge(a, s, offsetA) : (onEdge(a, 0, offsetA) + onEdge(b, 0, -offsetB)) * 0.5;
+            const double l = length(p);
+            return l > cap ? p * (cap / l) : p;
+        };
+        c.left[k] = c.right[j] = mitre(g.inner, g.s, a.half, b.half, limit);
+        if (g.corner) {
+            c.leftOuter[k] = c.rightOuter[j] =
+                mitre(g.outer, g.so, a.half + a.walkLeft, b.half + b.walkRight,
+                      kMitreLimit * std::max(a.half + a.walkLeft, b.half + b.walkRight));
+            c.leftGoesOn[k] = c.rightGoesOn[j] = true;
+        } else {
+            c.leftOuter[k] = c.left[k] + a.n * a.walkLeft;
+            c.rightOuter[j] = c.right[j] - b.n * b.walkRight;
+        }
+    }
+}
+
+/// The junction polygon of a node of three or more ends, appended to out.junctions, and the sidewalk
+/// corners between its neighbours that both have a sidewalk there, appended to out.corners.
+void junctionPolygon(const Node& node, const Trims& trims, const std::vector<std::vector<float>>& elevations,
+                     NodeCorners& c, StreetJunctions& out) {
+    const size_t count = node.ends.size();
+    JunctionShape shape;
+    shape.centre = node.point;
+    shape.path = node.path;
+    shape.elevation = elevationAt(elevations, node.ends[0].road, node.ends[0].atEnd);
+    double widest = -1;
+    for (const NodeEnd& e : node.ends)
+        if (e.half > widest) widest = e.half, shape.road = e.road;
+    for (size_t k = 0; k < count; ++k) {
+        const size_t j = (k + 1) % count;
+        const NodeEnd &a = node.ends[k], &b = node.ends[j];
+        const Gap& g = node.gaps[k];
+        const double ta = trims.of(a), tb = trims.of(b);
+        // The border from a's left corner to b's right one: through the crossing when both trims
+        // reach it, round the back of the node across a wide gap, else straight.
+        std::vector<Vec2d> inner{c.left[k]}, outer{c.leftOuter[k]};
+        const double slack = 1e-9 * (1.0 + ta + tb);
+        if (g.inner && g.s <= ta + slack && g.u <= tb + slack) inner.push_back(onEdge(a, g.s, a.half));
+        const auto back = [&](double offsetA, double offsetB) {
+            double s = 0, u = 0;
+            Vec2d p = crossEdges(a, offsetA, b, offsetB, s, u) ? onEdge(a, s, offsetA)
+                                                             : Vec2d{std::cos(a.angle + g.angle * 0.5),
+                                                                     std::sin(a.angle + g.angle * 0.5)} *
+                                                                   std::max(offsetA, offsetB);
+            const double l = length(p), cap = kMitreLimit * std::max(offsetA, offsetB);
+            return l > cap ? p * (cap / l) : p;
+        };
+        const bool roundBack = g.angle > std::numbers::pi + kStraightGap;
+        if (roundBack) inner.push_back(back(a.half, b.half));
+        inner.push_back(c.right[j]);
+        // The ring: each end's right and left corner, then the border's points between.
+        shape.ring.push_back(c.right[k] + node.point);
+        for (size_t m = 0; m + 1 < inner.size(); ++m) shape.ring.push_back(inner[m] + node.point);
+        if (g.corner) {
+            if (g.outer && g.so <= ta + slack && g.uo <= tb + slack)
+                outer.push_back(onEdge(a, g.so, a.half + a.walkLeft));
+            if (roundBack) outer.push_back(back(a.half + a.walkLeft, b.half + b.walkRight));
+            outer.push_back(c.rightOuter[j]);
+            SidewalkCorner corner;
+            for (const Vec2d& p : inner) corner.inner.push_back(p + node.point);
+            for (const Vec2d& p : outer) corner.outer.push_back(p + node.point);
+            corner.elevation = shape.elevation;
+            corner.road = a.road;
+            out.corners.push_back(std::move(corner));
+            c.leftGoesOn[k] = c.rightGoesOn[j] = true;
+        } else {
+            std::vector<Vec2d> side;
+            for (const Vec2d& p : inner) side.push_back(p + node.point);
+            shape.bareSides.push_back(std::move(side));
+        }
+    }
+    out.junctions.push_back(std::move(shape));
+}
+
+/// Each end's RoadEnd from its node's corners, in the road's own frame: the road's own left is the
+/// node's right at its last point.
+void writeRoadEnds(const Node& node, const NodeCorners& c, StreetJunctions& out) {
+    const size_t count = node.ends.size();
+    const bool junction = count >= 3 && !node.path && !node.onCarriageway;
+    for (size_t k = 0; k < count; ++k) {
+        const NodeEnd& e = node.ends[k];
+        RoadEnd& end = e.atEnd ? out.ends[e.road] : out.starts[e.road];
+        const Vec2d l = c.left[k] + node.point, r = c.right[k] + node.point;
+        const Vec2d lo = c.leftOuter[k] + node.point, ro = c.rightOuter[k] + node.point;
+        end.left = e.atEnd ? r : l;
+        end.right = e.atEnd ? l : r;
+        end.leftOuter = e.atEnd ? ro : lo;
+        end.rightOuter = e.atEnd ? lo : ro;
+        end.leftGoesOn = e.atEnd ? c.rightGoesOn[k] : c.leftGoesOn[k];
+        end.rightGoesOn = e.atEnd ? c.leftGoesOn[k] : c.rightGoesOn[k];
+        end.deadEnd = count == 1 || node.onCarriageway;
+        end.atJunction = junction;
+    }
+}
 } // namespace
 
 Vec2d pointAlong(const std::vector<Vec2d>& line, double distance, Vec2d& direction) {
@@ -227,189 +449,18 @@ StreetJunctions shapeJunctions(const std::vector<Road>& roads, const std::vector
     out.starts.resize(roads.size());
     out.ends.resize(roads.size());
     out.consumed.assign(roads.size(), false);
-
-    // The nodes, in the order the roads first reach them.
-    std::vector<Node> nodes;
-    std::unordered_map<PointKey, uint32_t, PointKeyHash> nodeAt[2];
-    std::unordered_map<PointKey, std::vector<Corridor>, PointKeyHash> carriagewayAt;
-    std::vector<double> lengths(roads.size());
-    for (uint32_t r = 0; r < roads.size(); ++r) {
-        const Road& road = roads[r];
-        lengths[r] = polylineLength(road.centerline);
-        if (road.centerline.size() < 2 || !(lengths[r] > 0)) {
-            out.consumed[r] = true;
-            continue;
-        }
-        const bool path = isPath(road.highway);
-        if (!path)
-            for (size_t i = 0; i < road.centerline.size(); ++i) {
-                const Vec2d a = road.centerline[i == 0 ? 0 : i - 1], b = road.centerline[i == 0 ? 1 : i];
-                carriagewayAt[PointKey(road.centerline[i])].push_back(
-                    {(b - a) * (1.0 / std::max(length(b - a), 1e-12)),
-                     road.width * 0.5 + std::max(road.sidewalkLeftWidth, road.sidewalkRightWidth)});
-            }
-        for (const bool atEnd : {false, true}) {
-            NodeEnd e;
-            e.road = r;
-            e.atEnd = atEnd;
-            e.line = road.centerline;
-            if (atEnd) std::reverse(e.line.begin(), e.line.end());
-            pointAlong(e.line, 0.0, e.d);
-            e.n = perpLeft(e.d);
-            e.half = road.width * 0.5;
-            e.length = lengths[r];
-            e.walkLeft = atEnd ? road.sidewalkRightWidth : road.sidewalkLeftWidth;
-            e.walkRight = atEnd ? road.sidewalkLeftWidth : road.sidewalkRightWidth;
-            const Vec2d p = e.line.front();
-            const auto [it, added] = nodeAt[path].emplace(PointKey(p), uint32_t(nodes.size()));
-            if (added) {
-                nodes.emplace_back();
-                nodes.back().point = p;
-                nodes.back().path = path;
-            }
-            nodes[it->second].ends.push_back(std::move(e));
-        }
-    }
-
+    StreetGraph graph = collectNodes(roads, out.consumed);
     // Gaps between neighbours and the trims they ask for.
-    std::vector<double> trimStart(roads.size(), 0), trimEnd(roads.size(), 0);
-    for (Node& node : nodes) {
-        for (NodeEnd& e : node.ends)
-            for (Vec2d& p : e.line) p = p - node.point;   // node-relative: crossings keep their precision
-        if (node.path)
-            if (const auto it = carriagewayAt.find(PointKey(node.point)); it != carriagewayAt.end()) {
-                node.onCarriageway = true;
-                for (const NodeEnd& e : node.ends)
-                    for (const Corridor& c : it->second) {
-                        const double sine = std::max(std::fabs(cross(e.d, c.d)), kMinPathSine);
-                        node.pathTrim = std::max(node.pathTrim, c.half / sine + kPathClearance);
-                    }
-            }
-        measureGaps(node, trimStart, trimEnd);
-    }
-    mergeCloseJunctions(roads, lengths, nodes, nodeAt[0], trimStart, trimEnd, out.consumed);
-
-    // Both trims must leave some of the road; a path that its cuts eat up is not drawn.
-    for (uint32_t r = 0; r < roads.size(); ++r) {
-        if (out.consumed[r]) continue;
-        const double sum = trimStart[r] + trimEnd[r], room = lengths[r] * (1.0 - kKeptShare);
-        if (sum > room) {
-            if (isPath(roads[r].highway)) out.consumed[r] = true;
-            trimStart[r] *= room / sum;
-            trimEnd[r] *= room / sum;
-        }
-        out.starts[r].trim = trimStart[r];
-        out.ends[r].trim = trimEnd[r];
-    }
-
-    for (Node& node : nodes) {
+    Trims trims{std::vector<double>(roads.size(), 0), std::vector<double>(roads.size(), 0)};
+    for (Node& node : graph.nodes) measureNode(node, graph, trims);
+    mergeCloseJunctions(roads, graph.lengths, graph.nodes, graph.nodeAt[0], trims, out.consumed);
+    fitTrims(roads, graph.lengths, trims, out);
+    for (const Node& node : graph.nodes) {
+        NodeCorners corners = trimmedCorners(node, trims);
         const size_t count = node.ends.size();
-        // Corners as the node sees them (left = counter-clockwise), node-relative.
-        std::vector<Vec2d> left(count), right(count), leftOuter(count), rightOuter(count);
-        std::vector<bool> leftGoesOn(count, false), rightGoesOn(count, false);
-        for (size_t k = 0; k < count; ++k) {
-            const NodeEnd& e = node.ends[k];
-            const double t = trimOf(e, trimStart, trimEnd);
-            Vec2d d;
-            Vec2d p = pointAlong(e.line, t, d), n = perpLeft(d);
-            if (count >= 3 && !node.onCarriageway) p = onEdge(e, t, 0), n = e.n;   // on the chord the gaps measured
-            left[k] = p + n * e.half;
-            right[k] = p - n * e.half;
-            leftOuter[k] = p + n * (e.half + e.walkLeft);
-            rightOuter[k] = p - n * (e.half + e.walkRight);
-        }
-        if (count == 2 && !node.onCarriageway) {
-            // A mitre: each side's corner is where the two edges cross (capped), shared by both roads.
-            for (size_t k = 0; k < 2; ++k) {
-                const size_t j = 1 - k;
-                const NodeEnd &a = node.ends[k], &b = node.ends[j];
-                const Gap& g = node.gaps[k];
-                const double limit = kMitreLimit * std::max(a.half, b.half);
-                const auto mitre = [&](bool crossed, double s, double offsetA, double offsetB, double cap) {
-                    Vec2d p = crossed ? onEdge(a, s, offsetA) : (onEdge(a, 0, offsetA) + onEdge(b, 0, -offsetB)) * 0.5;
-                    const double l = length(p);
-                    return l > cap ? p * (cap / l) : p;
-                };
-                left[k] = right[j] = mitre(g.inner, g.s, a.half, b.half, limit);
-                if (g.corner) {
-                    leftOuter[k] = rightOuter[j] =
-                        mitre(g.outer, g.so, a.half + a.walkLeft, b.half + b.walkRight,
-                              kMitreLimit * std::max(a.half + a.walkLeft, b.half + b.walkRight));
-                    leftGoesOn[k] = rightGoesOn[j] = true;
-                } else {
-                    leftOuter[k] = left[k] + a.n * a.walkLeft;
-                    rightOuter[j] = right[j] - b.n * b.walkRight;
-                }
-            }
-        } else if (count >= 3 && !node.onCarriageway) {
-            JunctionShape shape;
-            shape.centre = node.point;
-            shape.path = node.path;
-            shape.elevation = elevationAt(elevations, node.ends[0].road, node.ends[0].atEnd);
-            double widest = -1;
-            for (const NodeEnd& e : node.ends)
-                if (e.half > widest) widest = e.half, shape.road = e.road;
-            for (size_t k = 0; k < count; ++k) {
-                const size_t j = (k + 1) % count;
-                const NodeEnd &a = node.ends[k], &b = node.ends[j];
-                const Gap& g = node.gaps[k];
-                const double ta = trimOf(a, trimStart, trimEnd), tb = trimOf(b, trimStart, trimEnd);
-                // The border from a's left corner to b's right one: through the crossing when both trims
-                // reach it, round the back of the node across a wide gap, else straight.
-                std::vector<Vec2d> inner{left[k]}, outer{leftOuter[k]};
-                const double slack = 1e-9 * (1.0 + ta + tb);
-                if (g.inner && g.s <= ta + slack && g.u <= tb + slack) inner.push_back(onEdge(a, g.s, a.half));
-                const auto back = [&](double offsetA, double offsetB) {
-                    double s = 0, u = 0;
-                    Vec2d p = crossEdges(a, offsetA, b, offsetB, s, u) ? onEdge(a, s, offsetA)
-                                                                     : Vec2d{std::cos(a.angle + g.angle * 0.5),
-                                                                             std::sin(a.angle + g.angle * 0.5)} *
-                                                                           std::max(offsetA, offsetB);
-                    const double l = length(p), cap = kMitreLimit * std::max(offsetA, offsetB);
-                    return l > cap ? p * (cap / l) : p;
-                };
-                const bool roundBack = g.angle > std::numbers::pi + kStraightGap;
-                if (roundBack) inner.push_back(back(a.half, b.half));
-                inner.push_back(right[j]);
-                // The ring: each end's right and left corner, then the border's points between.
-                shape.ring.push_back(right[k] + node.point);
-                for (size_t m = 0; m + 1 < inner.size(); ++m) shape.ring.push_back(inner[m] + node.point);
-                if (g.corner) {
-                    if (g.outer && g.so <= ta + slack && g.uo <= tb + slack)
-                        outer.push_back(onEdge(a, g.so, a.half + a.walkLeft));
-                    if (roundBack) outer.push_back(back(a.half + a.walkLeft, b.half + b.walkRight));
-                    outer.push_back(rightOuter[j]);
-                    SidewalkCorner corner;
-                    for (const Vec2d& p : inner) corner.inner.push_back(p + node.point);
-                    for (const Vec2d& p : outer) corner.outer.push_back(p + node.point);
-                    corner.elevation = shape.elevation;
-                    corner.road = a.road;
-                    out.corners.push_back(std::move(corner));
-                    leftGoesOn[k] = rightGoesOn[j] = true;
-                } else {
-                    std::vector<Vec2d> side;
-                    for (const Vec2d& p : inner) side.push_back(p + node.point);
-                    shape.bareSides.push_back(std::move(side));
-                }
-            }
-            out.junctions.push_back(std::move(shape));
-        }
-        const bool junction = count >= 3 && !node.path && !node.onCarriageway;
-        for (size_t k = 0; k < count; ++k) {
-            const NodeEnd& e = node.ends[k];
-            RoadEnd& end = e.atEnd ? out.ends[e.road] : out.starts[e.road];
-            // The road's own left is the node's right at its last point.
-            const Vec2d l = left[k] + node.point, r = right[k] + node.point;
-            const Vec2d lo = leftOuter[k] + node.point, ro = rightOuter[k] + node.point;
-            end.left = e.atEnd ? r : l;
-            end.right = e.atEnd ? l : r;
-            end.leftOuter = e.atEnd ? ro : lo;
-            end.rightOuter = e.atEnd ? lo : ro;
-            end.leftGoesOn = e.atEnd ? rightGoesOn[k] : leftGoesOn[k];
-            end.rightGoesOn = e.atEnd ? leftGoesOn[k] : rightGoesOn[k];
-            end.deadEnd = count == 1 || node.onCarriageway;
-            end.atJunction = junction;
-        }
+        if (count == 2 && !node.onCarriageway) mitreCorners(node, corners);
+        else if (count >= 3 && !node.onCarriageway) junctionPolygon(node, trims, elevations, corners, out);
+        writeRoadEnds(node, corners, out);
     }
     return out;
 }

@@ -1,13 +1,23 @@
-// Closest-hit and shadow queries against triangles stored in BVH leaf order (host+device).
+// Closest-hit and shadow queries against triangles stored in the 4-wide BVH's leaf order (host+device):
+// the reference that the tests and urbis_bench compare traceWideTriangles
+// (src/geometry/wide_triangle_scene.h) with.
 #pragma once
 
-#include "accel/bvh_traverse.h"
+#include "bvh4/traverse.h"
 #include "geometry/triangle_intersect.h"
-#include "scene/triangle_scene_view.h"
+#include "scene/triangle.h"
 
 #include <cstdint>
 
 namespace urbis {
+
+/// Non-owning view of a triangle BVH: nodes from buildBvh over the triangles' bounds and the
+/// triangles reordered by its primOrder (triangles[i] = original[primOrder[i]]).
+struct TriangleSceneView {
+    const BvhNode* nodes;
+    const Triangle* triangles;
+    uint32_t triangleCount;
+};
 
 /// Tests triangles[prim] (watertight); on a hit fills h and shrinks r.tmax to its distance.
 URBIS_HD inline bool hitTriangle(const Triangle* triangles, const WatertightRay& wr, uint32_t prim, Ray& r, Hit& h) {

@@ -1,4 +1,5 @@
-// The flat 4-wide BVH node that the CPU and the GPU read as it is (host+device POD).
+// The node of the flat 4-wide BVH (host+device POD): the reference that the tests and urbis_bench
+// compare the renderer's 8-wide BVH (src/accel/wide_bvh_node.h) with.
 #pragma once
 
 #include "math/bounds.h"
