@@ -212,8 +212,8 @@ TEST(Atmosphere, SkyTableSamplesItsPdf) {
     options.skyMinShare = 0.0f;
     buildLights(scene, options);
     const SceneView view = scene.view();
-    ASSERT_NE(view.lights.skyLight, kNoLight);
-    const LightRecord sky = lightRecord(view.lights, view.lights.skyLight);
+    ASSERT_NE(view.lights.first<SkyLight>(), kNoLight);
+    const LightRecord sky = lightRecord(view, view.lights.first<SkyLight>());
     chi2::DirectionBins bins;
     bins.frame = Frame{Vec3f{1, 0, 0}, Vec3f{0, 0, 1}, Vec3f{0, 1, 0}};
     bins.smooth = false;

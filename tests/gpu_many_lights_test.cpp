@@ -78,7 +78,7 @@ TEST(GpuManyLights, LitWindowsMatchTheCpu) {
     test::addSquare(mesh, 200.0f, 0.0f, 0);
     Scene scene = test::nightScene(mesh, test::wallMaterials(), {test::testWall(6, 4, 0.4f, 99u)}, {});
     buildLights(scene);
-    ASSERT_NE(scene.lights.firstWallLight, kNoLight);
+    ASSERT_NE(scene.lights.first<WindowLight>(), kNoLight);
     RenderSettings settings;
     settings.width = settings.height = 64;
     settings.spp = 512;

@@ -25,7 +25,7 @@ TEST(GpuNightSky, MoonAndStarsMatchTheCpu) {
     scene.sun = celestial.sun;
     scene.night = celestial.night;
     buildLights(scene);
-    ASSERT_NE(scene.lights.moonLight, kNoLight);
+    ASSERT_NE(scene.lights.first<MoonLight>(), kNoLight);
     const Vec3f eye{0, 2, 0};
     const Camera camera = makeLookAtCamera(eye, eye + celestial.night.moon.direction, 40.0f, 161.0f / 121.0f);
     LinearImage cpu, gpu;

@@ -62,11 +62,11 @@ TEST(IntegratorDefaultWorld, MisKeepsTheMean) {
     // The sun outshines the sky's table here, so the default list leaves the sky to BSDF sampling
     // (light_build.cpp); MIS over every light is what this test checks.
     buildLights(world.scene);
-    EXPECT_EQ(world.scene.lights.skyLight, kNoLight);
+    EXPECT_EQ(world.scene.lights.first<SkyLight>(), kNoLight);
     LightBuildOptions everyLight;
     everyLight.skyMinShare = 0.0f;
     buildLights(world.scene, everyLight);
-    EXPECT_NE(world.scene.lights.skyLight, kNoLight);
+    EXPECT_NE(world.scene.lights.first<SkyLight>(), kNoLight);
     const std::vector<double> mis = blockMeans(renderCpu(world.scene.view(), world.camera, settings, false, counters), 6);
     EXPECT_NEAR(mis.back() / reference.back(), 1.0, 0.01) << "image mean";
     double worst = 0;

@@ -28,18 +28,19 @@ const LightSampleContext kPoints[] = {
 
 /// Draws `samples` picks of `kind` at `ctx` and tests their counts against the pmfs (and that each
 /// pick's reported pmf is the pmf of that light).
-void expectChoiceFits(const LightsView& lights, LightSamplerKind kind, const LightSampleContext& ctx, uint32_t samples,
+void expectChoiceFits(const SceneView& lights, LightSamplerKind kind, const LightSampleContext& ctx, uint32_t samples,
                       uint32_t seed) {
-    std::vector<double> observed(lights.count, 0.0), expected(lights.count, 0.0);
+    const uint32_t count = lightCount(lights);
+    std::vector<double> observed(count, 0.0), expected(count, 0.0);
     double total = 0;
-    for (uint32_t i = 0; i < lights.count; ++i) total += expected[i] = lightSelectionPmf(lights, kind, ctx, i);
+    for (uint32_t i = 0; i < count; ++i) total += expected[i] = lightSelectionPmf(lights, kind, ctx, i);
     ASSERT_NEAR(total, 1.0, 1e-4);
     for (double& e : expected) e *= samples;
     SampleStream rng{seed, 0, 0};
     for (uint32_t s = 0; s < samples; ++s) {
         float pmf;
         const uint32_t i = selectLight(lights, kind, ctx, rng.draw(), pmf);
-        ASSERT_LT(i, lights.count);
+        ASSERT_LT(i, count);
         if (s < 5000) {
             ASSERT_EQ(pmf, lightSelectionPmf(lights, kind, ctx, i)) << "light " << i;
         }
@@ -58,12 +59,12 @@ TEST(LightBvh, ChoiceFitsPmf) {
     options.colliderRadius = 15.0f;
     buildLights(scene, options);
     const SceneView view = scene.view();
-    ASSERT_EQ(view.lights.count, 1200u);
+    ASSERT_EQ(lightCount(view), 1200u);
     ASSERT_EQ(scene.lightBvhNodes.size(), 2u * 1200u - 1u);
     uint32_t seed = 3;
     for (const LightSampleContext& ctx : kPoints)
         for (LightSamplerKind kind : {LightSamplerKind::Bvh, LightSamplerKind::Colliders})
-            expectChoiceFits(view.lights, kind, ctx, 100000, seed++);
+            expectChoiceFits(view, kind, ctx, 100000, seed++);
 }
 
 // The pmfs of every light sum to one at many points (with infinite lights: the sun and the sky,
@@ -76,11 +77,11 @@ TEST(LightBvh, PmfsSumToOne) {
     LightBuildOptions options;
     options.skyMinShare = 0.0f;
     buildLights(scene, options);
-    const LightsView lights = scene.view().lights;
-    ASSERT_EQ(lights.infiniteCount, 2u);
+    const SceneView lights = scene.view();
+    ASSERT_EQ(lights.infiniteLights.size, 2u);
+    const uint32_t count = lightCount(lights), sun = lights.lights.first<SunLight>(), sky = lights.lights.first<SkyLight>();
     double infinitePower = 0, finitePower = 0;
-    for (uint32_t i = 0; i < lights.count; ++i)
-        (i == lights.sunLight || i == lights.skyLight ? infinitePower : finitePower) += lights.records[i].power;
+    for (uint32_t i = 0; i < count; ++i) (i == sun || i == sky ? infinitePower : finitePower) += lights.lightRecords[i].power;
     ASSERT_GT(finitePower, 1e-3 * infinitePower);   // the tree keeps a share worth testing
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -89,10 +90,10 @@ TEST(LightBvh, PmfsSumToOne) {
         const Vec3f n = k % 4 == 0 ? Vec3f{} : normalize(Vec3f{unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f});
         for (LightSamplerKind kind : {LightSamplerKind::Bvh, LightSamplerKind::Colliders}) {
             double sum = 0, infinite = 0;
-            for (uint32_t i = 0; i < lights.count; ++i) {
+            for (uint32_t i = 0; i < count; ++i) {
                 const double pmf = lightSelectionPmf(lights, kind, {p, n}, i);
                 sum += pmf;
-                if (i == lights.sunLight || i == lights.skyLight) infinite += pmf;
+                if (i == sun || i == sky) infinite += pmf;
             }
             EXPECT_NEAR(sum, 1.0, 1e-4) << "point " << k;
             // The BVH: the infinite lights' power against the tree's. The colliders: each infinite
@@ -112,8 +113,8 @@ TEST(LightBvh, NearLightIsLikelier) {
     Scene scene = Scene::build({.mesh = mesh, .materials = {Material{}, test::emitter(Vec3f{10, 10, 10})}});
     scene.sky = Sky::uniform(Vec3f{0, 0, 0});
     buildLights(scene);
-    const LightsView lights = scene.view().lights;
-    ASSERT_EQ(lights.count, 3u);
+    const SceneView lights = scene.view();
+    ASSERT_EQ(lightCount(lights), 3u);
     const LightSampleContext ctx{{0, 0, 0}, {0, 1, 0}};
     EXPECT_GT(lightSelectionPmf(lights, LightSamplerKind::Bvh, ctx, 0), 20.0f * lightSelectionPmf(lights, LightSamplerKind::Bvh, ctx, 2));
 }

@@ -78,9 +78,9 @@ TEST(LightsChi2, SkyFromItsTable) {
     Scene scene = Scene::build({.materials = {Material{}}});
     buildLights(scene);
     const SceneView view = scene.view();
-    ASSERT_NE(view.lights.skyLight, kNoLight);
-    ASSERT_FALSE(view.lights.skyTable.empty());
-    const LightRecord sky = lightRecord(view.lights, view.lights.skyLight);
+    ASSERT_NE(view.lights.first<SkyLight>(), kNoLight);
+    ASSERT_FALSE(view.skyTable.size == 0);
+    const LightRecord sky = lightRecord(view, view.lights.first<SkyLight>());
     const chi2::DirectionBins bins = skyMapBins(32, 32, -1.0, 12);
     uint32_t mismatches = 0;  // a direction rounded back across a cell's edge reads its neighbour's pdf
     expectFits(
@@ -103,8 +103,8 @@ TEST(LightsChi2, SkyFromItsTable) {
 TEST(LightsChi2, SunDisk) {
     Scene scene = lightsScene();
     const SceneView view = scene.view();
-    const LightRecord sun = lightRecord(view.lights, view.lights.sunLight);
-    ASSERT_EQ(sun.kind, LightKind::Sun);
+    const LightRecord sun = lightRecord(view, view.lights.first<SunLight>());
+    ASSERT_EQ(sun.kind, kLightKindOf<SunLight>);
     chi2::DirectionBins bins;
     bins.frame = Frame::fromZ(scene.sun.direction);
     bins.cosMin = scene.sun.cosHalfAngle;
@@ -128,8 +128,8 @@ TEST(LightsChi2, EmissiveSurfaces) {
     for (uint32_t material : {1u, 3u}) {
         const uint32_t index = firstLightOf(scene, material);
         ASSERT_NE(index, kNoLight);
-        const LightRecord light = lightRecord(view.lights, index);
-        const EmissiveSurface& surface = view.lights.surfaces[light.index];
+        const LightRecord light = lightRecord(view, index);
+        const EmissiveSurface& surface = view.emissiveSurfaces[light.index];
         const Vec3f from = material == 1 ? Vec3f{0.5f, 0.0f, 0.2f} : Vec3f{1.0f, -1.0f, 0.5f};
         const Bounds3f box = lightBoundsOf(scene, light).bounds;
         chi2::DirectionBins bins;
@@ -140,7 +140,7 @@ TEST(LightsChi2, EmissiveSurfaces) {
         auto pdf = [&](Vec3f d) {
             double sum = 0;
             for (uint32_t i = 0; i < surface.triangleCount; ++i) {
-                const TriangleLight& t = view.lights.triangles[surface.firstTriangle + i];
+                const TriangleLight& t = view.triangleLights[surface.firstTriangle + i];
                 const float distance = hitDistance(t, from, d);
                 if (distance > 0)
                     sum += double(lightPdf(view, light, d, distance, dot(normalize(cross(t.p1 - t.p0, t.p2 - t.p0)), d)));
@@ -163,20 +163,20 @@ TEST(LightsChi2, EmissiveSurfaces) {
 TEST(LightsChi2, LightSamplerChoice) {
     Scene scene = lightsScene();
     const SceneView view = scene.view();
-    const uint32_t n = lightCount(view.lights);
+    const uint32_t n = lightCount(view);
     ASSERT_EQ(n, 9u);  // sun, sky, seven emitting triangles
     for (LightSamplerKind kind : {LightSamplerKind::Uniform, LightSamplerKind::Power}) {
         std::vector<double> observed(n, 0.0), expected(n, 0.0);
         double total = 0;
-        for (uint32_t i = 0; i < n; ++i) total += expected[i] = lightSelectionPmf(view.lights, kind, {}, i);
+        for (uint32_t i = 0; i < n; ++i) total += expected[i] = lightSelectionPmf(view, kind, {}, i);
         EXPECT_NEAR(total, 1.0, 1e-5);
         for (double& e : expected) e *= kSamples;
         SampleStream rng{21, 0, 0};
         for (uint32_t s = 0; s < kSamples; ++s) {
             float pmf;
-            const uint32_t i = selectLight(view.lights, kind, {}, rng.draw(), pmf);
+            const uint32_t i = selectLight(view, kind, {}, rng.draw(), pmf);
             ASSERT_LT(i, n);
-            EXPECT_FLOAT_EQ(pmf, lightSelectionPmf(view.lights, kind, {}, i));
+            EXPECT_FLOAT_EQ(pmf, lightSelectionPmf(view, kind, {}, i));
             observed[i] += 1;
         }
         const chi2::Outcome outcome = chi2::pearson(observed, expected);
@@ -185,8 +185,8 @@ TEST(LightsChi2, LightSamplerChoice) {
     // By power the small bright source is picked more often than the large dim one, which has 36
     // times its area but a fortieth of its radiance.
     const uint32_t bright = firstLightOf(scene, 3), dim = firstLightOf(scene, 2);
-    EXPECT_GT(lightSelectionPmf(view.lights, LightSamplerKind::Power, {}, bright),
-              lightSelectionPmf(view.lights, LightSamplerKind::Power, {}, dim));
+    EXPECT_GT(lightSelectionPmf(view, LightSamplerKind::Power, {}, bright),
+              lightSelectionPmf(view, LightSamplerKind::Power, {}, dim));
 }
 
 // Each light's pdf integrates to one over the directions it covers (the sky's over the sphere,
@@ -194,7 +194,7 @@ TEST(LightsChi2, LightSamplerChoice) {
 TEST(LightsPdf, IntegratesToOne) {
     Scene scene = lightsScene();
     const SceneView view = scene.view();
-    const LightRecord sky = lightRecord(view.lights, view.lights.skyLight), sun = lightRecord(view.lights, view.lights.sunLight);
+    const LightRecord sky = lightRecord(view, view.lights.first<SkyLight>()), sun = lightRecord(view, view.lights.first<SunLight>());
     EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sky, d, 0, 0)); }, skyMapBins(64, 128, -1.0, 2)),
                 1.0, 1e-4);
     chi2::DirectionBins disk;
@@ -202,9 +202,9 @@ TEST(LightsPdf, IntegratesToOne) {
     disk.cosMin = scene.sun.cosHalfAngle;
     disk.smooth = false;
     EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sun, d, 0, 0)); }, disk), 1.0, 1e-3);
-    const LightRecord bright = lightRecord(view.lights, firstLightOf(scene, 3));
-    const EmissiveSurface& brightSurface = view.lights.surfaces[bright.index];
-    const TriangleLight* triangles = view.lights.triangles + brightSurface.firstTriangle;
+    const LightRecord bright = lightRecord(view, firstLightOf(scene, 3));
+    const EmissiveSurface& brightSurface = view.emissiveSurfaces[bright.index];
+    const TriangleLight* triangles = view.triangleLights.data + brightSurface.firstTriangle;
     const Vec3f from{1.0f, -1.0f, 0.5f};
     chi2::DirectionBins towards;
     towards.frame = Frame::fromZ(normalize(lightBoundsOf(scene, bright).bounds.centre() - from));
@@ -229,12 +229,12 @@ TEST(LightsBuild, SkyJoinsWhereItOutshinesTheSun) {
     Scene scene = Scene::build({.materials = {Material{}}});
     scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{3.3f, 3.1f, 2.8f});
     buildLights(scene);
-    EXPECT_NE(scene.lights.sunLight, kNoLight);
-    EXPECT_EQ(scene.lights.skyLight, kNoLight);
+    EXPECT_NE(scene.lights.first<SunLight>(), kNoLight);
+    EXPECT_EQ(scene.lights.first<SkyLight>(), kNoLight);
     scene.sun = makeSun(40.0f, 150.0f, 0.27f, Vec3f{0, 0, 0});
     buildLights(scene);
-    EXPECT_EQ(scene.lights.sunLight, kNoLight);
-    EXPECT_NE(scene.lights.skyLight, kNoLight);
+    EXPECT_EQ(scene.lights.first<SunLight>(), kNoLight);
+    EXPECT_NE(scene.lights.first<SkyLight>(), kNoLight);
 }
 
 // Over an infinite ground plane nothing below the horizon can be seen from above it: the sky's
@@ -243,7 +243,7 @@ TEST(LightsPdf, SkyAboveTheGroundSamplesTheUpperHemisphere) {
     Scene scene = Scene::build({.materials = {Material{}}, .grounds = {GroundRecord::around(0.0f, 0.0f, 0.0f, 0)}});
     buildLights(scene);
     const SceneView view = scene.view();
-    const LightRecord sky = lightRecord(view.lights, view.lights.skyLight);
+    const LightRecord sky = lightRecord(view, view.lights.first<SkyLight>());
     EXPECT_EQ(lightPdf(view, sky, normalize(Vec3f{0.3f, -0.2f, 0.5f}), 0, 0), 0.0f);
     EXPECT_NEAR(chi2::integratePdf([&](Vec3f d) { return double(lightPdf(view, sky, d, 0, 0)); }, skyMapBins(32, 128, 0.0, 2)),
                 1.0, 1e-4);

@@ -39,25 +39,28 @@ TEST(LightsMis, WeightsOfBothStrategiesSumToOne) {
         for (uint32_t lightSamples : {1u, 3u})
             for (LightSamplerKind kind : {LightSamplerKind::Uniform, LightSamplerKind::Power, LightSamplerKind::Bvh,
                                           LightSamplerKind::Colliders})
-                for (uint32_t light = 0; light < lightCount(view.lights); ++light)
+                for (uint32_t light = 0; light < lightCount(view); ++light)
                     for (int i = 0; i < 50; ++i) {
-                        const LightRecord record = lightRecord(view.lights, light);
+                        const LightRecord record = lightRecord(view, light);
                         LightSample s;
                         if (!sampleLight(view, record, from, rng.draw(), rng.draw(), rng.draw(), s)) continue;
-                        const float pmf = lightSelectionPmf(view.lights, kind, {from, n}, light);
+                        const float pmf = lightSelectionPmf(view, kind, {from, n}, light);
                         const float lightPdfTotal = pmf * s.pdf, bsdf = bsdfPdf(m, wo, s.dir, n);
                         if (!(bsdf > 0.0f)) continue;
                         // The same direction as the BSDF would find it: the light's pdf from the hit.
-                        const float cosLight = record.kind == LightKind::EmissiveSurface ? -s.dir.y : 0.0f;
+                        const float cosLight = record.kind == kLightKindOf<EmissiveSurfaceLight> ? -s.dir.y : 0.0f;
                         const float found = pmf * lightPdf(view, record, s.dir, s.distance, cosLight);
                         EXPECT_NEAR(found, lightPdfTotal, 1e-3f * lightPdfTotal);
                         const float sum = lightSampleWeight(record.kind, lightSamples, lightPdfTotal, bsdf) +
-                                          bsdfFoundWeight(BounceInfo{bsdf, false}, record.kind, lightSamples, pmf, s.pdf);
+                                          bsdfFoundWeight(bsdf, record.kind, lightSamples, pmf, s.pdf);
                         EXPECT_NEAR(sum, 1.0f, 1e-5f);
                         ++checked;
                     }
     EXPECT_GT(checked, 500);
     // A specular bounce or the camera ray counts what it finds in full.
-    EXPECT_EQ(bsdfFoundWeight(BounceInfo{}, LightKind::EmissiveSurface, 1, 0.5f, 3.0f), 1.0f);
-    EXPECT_EQ(bsdfFoundWeight(BounceInfo{}, LightKind::Sun, 1, 0.5f, 3.0f), 1.0f);
+    RenderSettings settings;
+    settings.lightSamples = 1;
+    const auto firstLight = [] { return 0u; };
+    EXPECT_EQ(foundWeight<EmissiveSurfaceLight>(view, settings, BounceInfo{}, firstLight, Vec3f{0, 1, 0}, 1.0f, 1.0f), 1.0f);
+    EXPECT_EQ(foundWeight<SunLight>(view, settings, BounceInfo{}, firstLight, Vec3f{0, 1, 0}, 0.0f, 0.0f), 1.0f);
 }

@@ -44,8 +44,8 @@ TEST(MoonLight, LightsAPlaneAsTheAnalyticIrradianceSays) {
     const Vec3f albedo{0.7f, 0.6f, 0.5f}, irradiance{2e-5f, 1.8e-5f, 1.6e-5f};
     const float elevation = 40.0f, radius = 0.26f;
     const Scene scene = moonlitPlane(albedo, makeSun(elevation, 200.0f, radius, irradiance));
-    ASSERT_NE(scene.lights.moonLight, kNoLight);
-    EXPECT_EQ(scene.lights.sunLight, kNoLight);
+    ASSERT_NE(scene.lights.first<MoonLight>(), kNoLight);
+    EXPECT_EQ(scene.lights.first<SunLight>(), kNoLight);
     const float meanCosine = std::sin(elevation * kPi / 180.0f) * 0.5f * (1.0f + std::cos(radius * kPi / 180.0f));
     const Vec3f expected = albedo * irradiance * (meanCosine / kPi);
     const Camera camera = cameraFromHeading(Vec3f{0, 10, 0}, 30.0f, -60.0f, 40.0f, 32.0f / 24.0f);
@@ -69,7 +69,7 @@ TEST(MoonLight, CameraRaysSeeTheDisk) {
 
 TEST(MoonLight, LeavesTheListBelowTheHorizon) {
     const Scene scene = moonlitPlane(Vec3f{0.5f, 0.5f, 0.5f}, Sun{});
-    EXPECT_EQ(scene.lights.moonLight, kNoLight);
+    EXPECT_EQ(scene.lights.first<MoonLight>(), kNoLight);
 }
 
 // The full moon of 2024-04-23 23:49 UT (US Naval Observatory, "Phases of the Moon"), seen from

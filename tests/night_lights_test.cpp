@@ -64,7 +64,7 @@ TEST(NightLamps, ProfileCarriesTheLuminousFlux) {
             flux += double(luminance(lampIntensity(lamp, {std::sqrt(1 - c * c), c, 0.0f}))) * 2.0 * M_PI * 2.0 / n;
         }
         EXPECT_NEAR(flux / (lamps[i].luminousFlux / kLuxPerUnit), 1.0, 2e-3) << "shape " << int(lamps[i].shape);
-        EXPECT_EQ(scene.lightRecords[scene.lights.firstLampLight + i].power, lamps[i].luminousFlux / kLuxPerUnit);
+        EXPECT_EQ(scene.lightRecords[scene.lights.first<LampLight>() + i].power, lamps[i].luminousFlux / kLuxPerUnit);
         const bool cutoff = lamps[i].shape == LampShape::Cobra || lamps[i].shape == LampShape::Flat ||
                             lamps[i].shape == LampShape::Cone;
         EXPECT_EQ(maxComponent(lampIntensity(lamp, normalize(Vec3f{1, 0.01f, 0}))) == 0.0f, cutoff);
@@ -82,7 +82,7 @@ TEST(NightLamps, IrradianceOnAPlaneIsAnalytic) {
     for (LampShape shape : {LampShape::Cobra, LampShape::Globe, LampShape::Flat}) {
         Scene scene = nightScene(mesh, planeAndLampMaterials(albedo), {}, {floatingLamp(shape, h)});
         buildLights(scene);
-        ASSERT_NE(scene.lights.firstLampLight, kNoLight);
+        ASSERT_NE(scene.lights.first<LampLight>(), kNoLight);
         const LampEmitter lamp = scene.lampLights[0];
         for (float angle : {0.0f, 45.0f, 70.0f}) {
             if (shape == LampShape::Globe && angle == 0.0f) continue;   // its collar shades the ground within 24 degrees of straight down
@@ -185,9 +185,9 @@ TEST(NightWindows, WallPowerIsTheSumOfItsLitWindows) {
     TriangleMesh mesh;
     Scene scene = nightScene(mesh, materials, {w}, {});
     buildLights(scene);
-    ASSERT_NE(scene.lights.firstWallLight, kNoLight);
-    EXPECT_NEAR(scene.lightRecords[scene.lights.firstWallLight].power / sum, 1.0, 1e-4);
-    EXPECT_EQ(scene.lightRecords[scene.lights.firstWallLight].litCells, lit);
+    ASSERT_NE(scene.lights.first<WindowLight>(), kNoLight);
+    EXPECT_NEAR(scene.lightRecords[scene.lights.first<WindowLight>()].power / sum, 1.0, 1e-4);
+    EXPECT_EQ(scene.lightRecords[scene.lights.first<WindowLight>()].litCells, lit);
 }
 
 // The pick of a lit cell (uniform tries, the first lit one kept) against its pmf, on a wall whose
@@ -237,8 +237,8 @@ TEST(NightWindows, AggregateSamplerMatchesItsPdf) {
     buildLights(scene);
     const SceneView view = scene.view();
     ASSERT_EQ(scene.walls.size(), 1u);
-    const LightRecord light = lightRecord(view.lights, view.lights.firstWallLight);
-    ASSERT_EQ(light.kind, LightKind::Aggregate);
+    const LightRecord light = lightRecord(view, view.lights.first<WindowLight>());
+    ASSERT_EQ(light.kind, kLightKindOf<WindowLight>);
     const Vec3f from{2.0f, 3.0f, 9.0f};
     chi2::DirectionBins bins;
     bins.frame = Frame::fromZ(normalize(w.worldFromWall(0.5f * w.width, 0.5f * w.height, 0) - from));
@@ -281,7 +281,7 @@ TEST(NightWindows, MisConvergesToBsdfSampling) {
     test::addSquare(mesh, 200.0f, 0.0f, 0);
     Scene scene = nightScene(mesh, wallMaterials(), {w}, {});
     buildLights(scene);
-    ASSERT_NE(scene.lights.firstWallLight, kNoLight);
+    ASSERT_NE(scene.lights.first<WindowLight>(), kNoLight);
     const Camera camera = cameraFromHeading(Vec3f{0.0f, 1.7f, 14.0f}, 0.0f, -20.0f, 60.0f, 1.0f);
     const auto render = [&](uint32_t lightSamples, uint32_t spp) {
         RenderSettings settings;

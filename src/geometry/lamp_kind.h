@@ -4,11 +4,14 @@
 #include "geometry/lamp_intersect.h"
 #include "geometry/surface_hit.h"
 #include "math/constants.h"
+#include "scene/light_records.h"
 
 namespace urbis {
 
 template <>
 struct KindIntersector<LampRecord> {
+    using Emitter = LampLight;  ///< its glass shows its lamp's light (lights/lamp_light.h)
+
     URBIS_HD static bool intersect(const LampRecord& lamp, const TraceRay&, Ray& ray, PrimHit& hit, bool anyHit) {
         LampHit l;
         if (!intersectLamp(lamp, ray, l, anyHit)) return false;

@@ -60,7 +60,10 @@ struct PrimHit {
 ///   static bool intersect(const Record&, const TraceRay&, Ray& ray, PrimHit& hit, bool anyHit):
 ///     a hit with ray.tmin < t < ray.tmax fills hit (not its slot) and sets ray.tmax = t;
 ///   static SurfaceHit surface(const SceneView&, uint32_t index, const Record&, const PrimHit&, const Ray&):
-///     the hit as a SurfaceHit (normal not yet turned towards the ray).
+///     the hit as a SurfaceHit (normal not yet turned towards the ray);
+///   using Emitter = <a light kind of scene/light_records.h>, where the kind emits (pbrt-v4's Le):
+///     the light kind that says what a ray finds emitted at its hits (Emitter::emittedAt) and which
+///     light of the list samples it (Emitter::lightAt). A kind without it shows its material's emission.
 template <typename Record>
 struct KindIntersector;
 

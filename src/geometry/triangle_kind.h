@@ -4,11 +4,14 @@
 #include "geometry/road_markings.h"
 #include "geometry/surface_hit.h"
 #include "geometry/triangle_intersect.h"
+#include "scene/light_records.h"
 
 namespace urbis {
 
 template <>
 struct KindIntersector<Triangle> {
+    using Emitter = EmissiveSurfaceLight;  ///< an emitting material's triangles are lights of their own (lights/emissive_surface_light.h)
+
     URBIS_HD static bool intersect(const Triangle& tri, const TraceRay& tr, Ray& ray, PrimHit& hit, bool) {
         float t, u, v;
         if (!intersectTriangle(tri, ray, tr.watertight, t, u, v)) return false;

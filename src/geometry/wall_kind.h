@@ -3,11 +3,14 @@
 
 #include "geometry/surface_hit.h"
 #include "geometry/wall_intersect.h"
+#include "scene/light_records.h"
 
 namespace urbis {
 
 template <>
 struct KindIntersector<WallRecord> {
+    using Emitter = WindowLight;  ///< its lit rooms, the windows of its record as one light (lights/window_light.h)
+
     URBIS_HD static bool intersect(const WallRecord& wall, const TraceRay& tr, Ray& ray, PrimHit& hit, bool anyHit) {
         WallHit w;
         if (!intersectWall(wall, ray, w, anyHit, tr.bvh.invDir[1])) return false;

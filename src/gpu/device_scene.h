@@ -36,16 +36,9 @@ struct DeviceScene {
     /// the small records. The rest (geometry, BVH, terrain, clouds) does not depend on the hour.
     void uploadLighting(const Scene& scene) {
         walls.upload(scene.walls);
-        lightRecords.upload(scene.lightRecords);
-        lightPower.upload(scene.lightPower);
-        emissiveSurfaces.upload(scene.emissiveSurfaces);
-        triangleLights.upload(scene.triangleLights);
-        lampLights.upload(scene.lampLights);
-        emitterTriangles.upload(scene.emitterTriangles);
-        lightBvhNodes.upload(scene.lightBvhNodes);
-        lightBvhTrails.upload(scene.lightBvhTrails);
-        infiniteLights.upload(scene.infiniteLights);
-        skyTable.upload(scene.skyTable);
+#define URBIS_DEVICE_UPLOAD_LIGHT(Type, name, key) name.upload(scene.name);
+        URBIS_LIGHT_ARRAYS(URBIS_DEVICE_UPLOAD_LIGHT)
+#undef URBIS_DEVICE_UPLOAD_LIGHT
         transmittanceLut.upload(scene.transmittanceLut);
         multiScatteringLut.upload(scene.multiScatteringLut);
         skyViewLut.upload(scene.skyViewLut);

@@ -9,7 +9,7 @@
 
 namespace urbis {
 
-/// The emission sphere (about everything but the ground records, which reach the world's edge) and the
+/// The emission sphere (lightSceneSphere, lights/scene_sphere.h) and the
 /// sky's share of photons, in a PhotonsView with no map and no buffers.
 PhotonsView photonEmissionOf(const Scene& scene, const SceneView& view);
 

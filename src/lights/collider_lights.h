@@ -1,7 +1,7 @@
 // The "colliders" light sampler (host+device): the thesis's method ("Direct rendering of procedural
 // models", CTU Prague 2021) made sound. There, an invisible sphere of fixed radius around each lamp
 // (its collider) sent the rays that entered it to the lamp. Here a shading point light-samples the
-// lights whose collider contains it (the light's box within LightsView::colliderRadius), chosen
+// lights whose collider contains it (the light's box within LightListInfo::colliderRadius), chosen
 // uniformly among them, and the infinite lights, as the light BVH shares them out; lights that no
 // collider brings near are left to BSDF sampling, which MIS weighs. docs/lights.md § Colliders says
 // why this stands for the thesis's method. The light BVH's tree serves as the range query.
@@ -23,14 +23,14 @@ constexpr uint32_t kLightBvhMaxDepth = 64;
 
 /// The lights whose collider contains `p`, in the tree's depth-first order: how many there are, and
 /// the one of rank `rank` (kNoLight if rank >= the count; pass kNoLight to count only).
-URBIS_HD inline uint32_t collidersAround(const LightsView& lights, Vec3f p, uint32_t rank, uint32_t& count) {
+URBIS_HD inline uint32_t collidersAround(const SceneView& scene, Vec3f p, uint32_t rank, uint32_t& count) {
     count = 0;
-    if (lights.bvhNodeCount == 0) return kNoLight;
-    const float r2 = lights.colliderRadius * lights.colliderRadius;
+    if (scene.lightBvhNodes.size == 0) return kNoLight;
+    const float r2 = scene.lights.colliderRadius * scene.lights.colliderRadius;
     uint32_t stack[kLightBvhMaxDepth];
     uint32_t top = 0, i = 0;
     for (;;) {
-        const LightBvhNode& node = lights.bvhNodes[i];
+        const LightBvhNode& node = scene.lightBvhNodes[i];
         if (distanceSquaredToBox(node.bounds, p) <= r2) {
             if (node.leaf()) {
                 if (count == rank) return node.index();
@@ -48,34 +48,35 @@ URBIS_HD inline uint32_t collidersAround(const LightsView& lights, Vec3f p, uint
 
 /// Picks a light for the shading point `p` with one uniform number: its index and probability
 /// (kNoLight and 0 where no collider contains p and there is no infinite light).
-URBIS_HD inline uint32_t sampleColliderLight(const LightsView& lights, Vec3f p, float u, float& pmf) {
+URBIS_HD inline uint32_t sampleColliderLight(const SceneView& scene, Vec3f p, float u, float& pmf) {
     pmf = 0.0f;
     uint32_t count;
-    collidersAround(lights, p, kNoLight, count);
-    const float share = infiniteShare(lights, count > 0);
-    if (u < share) return pickInfiniteLight(lights, share, u, pmf);
+    collidersAround(scene, p, kNoLight, count);
+    const float share = infiniteShare(scene, count > 0);
+    if (u < share) return pickInfiniteLight(scene, share, u, pmf);
     if (count == 0) return kNoLight;
     const float v = fminf((u - share) / (1.0f - share), kOneMinusEpsilon);
     pmf = (1.0f - share) / float(count);
     uint32_t unused;
-    return collidersAround(lights, p, uint32_t(v * float(count)), unused);
+    return collidersAround(scene, p, uint32_t(v * float(count)), unused);
 }
 
 /// Probability that sampleColliderLight(p) picks light `index`.
-URBIS_HD inline float colliderLightPmf(const LightsView& lights, Vec3f p, uint32_t index) {
+URBIS_HD inline float colliderLightPmf(const SceneView& scene, Vec3f p, uint32_t index) {
     uint32_t count;
-    collidersAround(lights, p, kNoLight, count);
-    const float share = infiniteShare(lights, count > 0);
-    uint64_t trail = lights.bvhTrails[index];
-    if (trail == kNoLightTrail) return isInfiniteLight(lights, index) ? share / float(lights.infiniteCount) : 0.0f;
+    collidersAround(scene, p, kNoLight, count);
+    const float share = infiniteShare(scene, count > 0);
+    uint64_t trail = scene.lightBvhTrails[index];
+    if (trail == kNoLightTrail) return isInfiniteLight(scene, index) ? share / float(scene.infiniteLights.size) : 0.0f;
     // The light's own box is its leaf's: follow its trail down.
+    const ArrayView<LightBvhNode>& nodes = scene.lightBvhNodes;
     uint32_t i = 0;
-    while (!lights.bvhNodes[i].leaf()) {
-        i = (trail & 1u) != 0 ? lights.bvhNodes[i].index() : i + 1;
+    while (!nodes[i].leaf()) {
+        i = (trail & 1u) != 0 ? nodes[i].index() : i + 1;
         trail >>= 1;
     }
-    const float r2 = lights.colliderRadius * lights.colliderRadius;
-    return distanceSquaredToBox(lights.bvhNodes[i].bounds, p) <= r2 ? (1.0f - share) / float(count) : 0.0f;
+    const float r2 = scene.lights.colliderRadius * scene.lights.colliderRadius;
+    return distanceSquaredToBox(nodes[i].bounds, p) <= r2 ? (1.0f - share) / float(count) : 0.0f;
 }
 
 } // namespace urbis

@@ -6,9 +6,18 @@
 // point's light samples carry the lamp's light there (docs/lights.md § Lamps).
 #pragma once
 
+#include "geometry/surface_hit.h"
+#include "lights/light_build.h"
+#include "lights/light_sample.h"
 #include "math/constants.h"
+#include "math/rng.h"
+#include "math/sampling.h"
+#include "scene/lamp_emission.h"
+#include "scene/lamp_pieces.h"
 #include "scene/light_bounds.h"
-#include "scene/light_records.h"
+#include "scene/scene_view.h"
+
+#include <cmath>
 
 namespace urbis {
 
@@ -104,5 +113,76 @@ URBIS_HD inline LightBounds lampLightBounds(const LampEmitter& lamp, float phi) 
     b.phi = phi;
     return b;
 }
+
+/// Lamp `lamp` as a light (host): a point at its glass's centre whose profile carries its luminous
+/// flux in the renderer's units (kLuxPerUnit) in its blackbody's colour.
+inline LampEmitter lampEmitterOf(const LampRecord& lamp) {
+    const LampPiece glass = lampPiece(lamp, 3);
+    LampEmitter light;
+    light.shape = lamp.shape;
+    Vec3f centre = glass.a;
+    if (glass.shape == LampPieceShape::Sphere) {
+        light.glassRadius = light.clearance = glass.b.x;
+    } else if (glass.b.x > 0.0f) {   // a lantern's glass: a frustum up from its bottom
+        centre.y += 0.5f * glass.b.x;
+        light.glassRadius = glass.b.y + 0.5f * glass.b.z * glass.b.x;
+        light.glassHeight = glass.b.x;
+        light.clearance = std::hypot(glass.highRadius(), 0.5f * glass.b.x);
+    } else {                         // a disc facing down: the shadow ray stops a centimetre short
+        light.glassRadius = glass.b.y;
+        light.clearance = 0.01f;
+    }
+    light.position = lamp.worldFromLamp(centre);
+    light.intensity = blackbodyRgb(lamp.colourTemperature) * (lamp.luminousFlux / kLuxPerUnit / lampProfileIntegral(lamp.shape));
+    return light;
+}
+
+/// Street lamps as a light kind, one light per lamp record, at dusk and at night. Lamps emit through
+/// it (KindIntersector<LampRecord>::Emitter): their glass. MIS does not weigh it: a point, which
+/// BSDF sampling never finds; its glass, found at a scattering vertex, counts nothing.
+struct LampLight {
+    static constexpr bool kInfinite = false, kMisWeighs = false, kFoundThroughPanes = false;
+    static constexpr bool kPickDraw = false, kPointDraws = false;  ///< a point: no numbers
+
+    URBIS_HD static bool sample(const SceneView& scene, const LightRecord& light, Vec3f from, float, float, float,
+                                LightSample& s) {
+        return sampleLampLight(scene.lampLights[light.index], from, s.dir, s.radiance, s.distance, s.pdf);
+    }
+    /// A delta light: no direction reaches it by BSDF sampling.
+    URBIS_HD static float pdf(const SceneView&, const LightRecord&, Vec3f, Vec3f, float, float) { return 0.0f; }
+    /// From the point, a direction uniform over the sphere, weighed by the profile.
+    URBIS_HD static bool emitPhoton(const SceneView& scene, const LightRecord& light, const PhotonNumbers& u, SampleStream&,
+                                    float scale, EmittedPhoton& out) {
+        const LampEmitter& lamp = scene.lampLights[light.index];
+        const Vec3f dir = sampleUniformSphere(u.u1, u.u2);
+        out.ray = Ray{lamp.position, dir, lamp.clearance};
+        out.power = lampIntensity(lamp, dir) * (4.0f * kPi * scale);
+        return true;
+    }
+    /// A lamp's glass where lamps are lights (lampGlassRadiance); else what its material emits.
+    URBIS_HD static EmissionAtHit emittedAt(const SceneView& scene, const SurfaceHit& hit, const Material& material,
+                                            const Ray&, Vec3f dir) {
+        if (hit.part == SurfacePart::LampGlass && scene.lights.first<LampLight>() != kNoLight)
+            return {lampGlassRadiance(scene.lampLights[hit.index], -dir), true};
+        return {materialEmission(material)};
+    }
+    URBIS_HD static uint32_t lightAt(const SceneView& scene, const SurfaceHit& hit) {
+        return scene.lights.first<LampLight>() + hit.index;
+    }
+
+    /// One light per lamp record, in their order, of its luminous flux as power.
+    static void addLights(LightListBuilder& b) {
+        if (!b.night || !b.options.lamps) return;
+        Scene& scene = b.scene;
+        for (uint32_t i = 0; i < scene.lamps.size(); ++i) {
+            scene.lampLights.push_back(lampEmitterOf(scene.lamps[i]));
+            b.add(kLightKindOf<LampLight>, i, scene.lamps[i].luminousFlux / kLuxPerUnit);
+        }
+    }
+    static LightBounds bounds(const Scene& scene, const LightRecord& light) {
+        return lampLightBounds(scene.lampLights[light.index], light.power);
+    }
+    static float photonFlux(const SceneView&, const LightRecord& light, float) { return light.power; }
+};
 
 } // namespace urbis

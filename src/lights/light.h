@@ -1,89 +1,74 @@
-// The light interface (host+device): one light of the closed set (scene/light_records.h) sampled
-// from a shading point, and the pdf of a direction that reached it by other means. A switch over
-// the record's tag; each kind's functions live in its own header.
+// The light interface (host+device): one light of the list (scene/light_records.h: LightKinds)
+// sampled from a shading point, and the pdf of a direction that reached it by other means. A fold
+// over the kinds' list dispatches on the record's kind, as the leaf dispatch does on primitive kinds
+// (geometry/prim_dispatch.h); each kind's functions live in its own header, included here.
 #pragma once
 
 #include "lights/emissive_surface_light.h"
 #include "lights/lamp_light.h"
+#include "lights/moon_light.h"
 #include "lights/sky_light.h"
 #include "lights/sun_light.h"
 #include "lights/window_light.h"
-#include "scene/scene_view.h"
+
+#include <utility>
 
 namespace urbis {
 
-/// A direction towards a light from a shading point.
-struct LightSample {
-    Vec3f dir;                ///< unit, world space
-    Vec3f radiance;           ///< arriving along -dir, before visibility
-    float pdf = 0;            ///< solid angle, given that this light was chosen
-    float distance = 3.0e38f; ///< to the point sampled; infinite lights: the largest float
-};
-
-/// The disk of a light of kind Sun or Moon: both are the sun's record (lights/sun_light.h).
-URBIS_HD inline const Sun& diskLight(const SceneView& scene, LightKind kind) {
-    return kind == LightKind::Moon ? scene.night.moon : scene.sun;
+template <typename F, uint32_t... I>
+URBIS_HD inline auto dispatchLightOver(uint32_t kind, F& f, std::integer_sequence<uint32_t, I...>) {
+    decltype(f(LightKindTag<0>{})) result{};
+    (void)(((I + 1 == kLightKindCount || kind == I) && (result = f(LightKindTag<I>{}), true)) || ...);
+    return result;
 }
 
+/// Calls f(LightKindTag<kind>{}) and returns what it returns: a C++20 fold over the kinds, one compare
+/// per kind but the last (which a kind that is none of the others is) and one inlined copy of each.
+template <typename F>
+URBIS_HD inline auto dispatchLight(uint32_t kind, F&& f) {
+    return dispatchLightOver(kind, f, std::make_integer_sequence<uint32_t, kLightKindCount>{});
+}
+
+template <typename Pred, uint32_t... I>
+constexpr uint32_t lightKindMaskOver(Pred pred, std::integer_sequence<uint32_t, I...>) {
+    return ((pred(LightKindTag<I>{}) ? 1u << I : 0u) | ... | 0u);
+}
+/// The kinds for which `pred(LightKindTag<I>{})` holds, as bits, so that a trait of a kind known only at
+/// run time is a shift.
+template <typename Pred>
+constexpr uint32_t lightKindMask(Pred pred) {
+    return lightKindMaskOver(pred, std::make_integer_sequence<uint32_t, kLightKindCount>{});
+}
+inline constexpr uint32_t kMisWeighedLightKinds = lightKindMask([](auto k) { return decltype(k)::Light::kMisWeighs; });
+inline constexpr uint32_t kPickDrawLightKinds = lightKindMask([](auto k) { return decltype(k)::Light::kPickDraw; });
+inline constexpr uint32_t kPointDrawLightKinds = lightKindMask([](auto k) { return decltype(k)::Light::kPointDraws; });
+inline constexpr uint32_t kInfiniteLightKinds = lightKindMask([](auto k) { return decltype(k)::Light::kInfinite; });
+
+/// Whether kind `kind`'s light samples are weighed by MIS against BSDF sampling (Light::kMisWeighs).
+URBIS_HD inline bool lightKindMisWeighs(uint32_t kind) { return ((kMisWeighedLightKinds >> kind) & 1u) != 0; }
+/// Whether kind `kind`'s sample reads its first number (Light::kPickDraw: a pick among its parts)
+/// and its other two (Light::kPointDraws: a point or direction). Numbers are drawn only where they
+/// choose something, since each draw is a hash.
+URBIS_HD inline bool lightKindPicks(uint32_t kind) { return ((kPickDrawLightKinds >> kind) & 1u) != 0; }
+URBIS_HD inline bool lightKindPlaces(uint32_t kind) { return ((kPointDrawLightKinds >> kind) & 1u) != 0; }
+
 /// Samples `light` as seen from `from` with three uniform numbers. Returns false when it gives
-/// nothing there (a disabled sun, an edge-on surface, no lit window found, a reserved kind).
+/// nothing there (a disabled sun, an edge-on surface, no lit window found).
 URBIS_HD inline bool sampleLight(const SceneView& scene, const LightRecord& light, Vec3f from, float u0, float u1,
                                  float u2, LightSample& s) {
-    switch (light.kind) {
-    case LightKind::Sun:
-    case LightKind::Moon: {
-        const Sun& disk = diskLight(scene, light.kind);
-        if (!sunEnabled(disk)) return false;
-        s.dir = sampleSunDirection(disk, u1, u2);
-        s.radiance = disk.radiance * diskTransmittanceFrom(scene, from, s.dir);
-        s.pdf = sunPdf(disk);
-        return true;
-    }
-    case LightKind::Sky:
-        s.dir = sampleSkyDirection(scene.lights.skyTable, u1, u2, s.pdf);
-        s.radiance = skyRadiance(scene, s.dir);
-        return s.pdf > 0.0f;
-    case LightKind::EmissiveSurface: {
-        const EmissiveSurface& surface = scene.lights.surfaces[light.index];
-        s.radiance = surface.emission;
-        return sampleEmissiveSurface(scene.lights.triangles, surface, from, u0, u1, u2, s.dir, s.distance, s.pdf);
-    }
-    case LightKind::Point:
-        return sampleLampLight(scene.lights.lampLights[light.index], from, s.dir, s.radiance, s.distance, s.pdf);
-    case LightKind::Aggregate: {
-        const WallRecord& wall = scene.walls[light.index];
-        const Vec3f room = scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)].emission;
-        const Material& glass = scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::Glass)];
-        return sampleWallWindows(wall, light.litCells, room, glass, from, u0, u1, u2, s.dir, s.distance, s.pdf, s.radiance);
-    }
-    case LightKind::Spot:
-        return false;
-    }
-    return false;
+    return dispatchLight(light.kind, [&](auto kind) {
+        return decltype(kind)::Light::sample(scene, light, from, u0, u1, u2, s);
+    });
 }
 
 /// Solid-angle pdf with which sampleLight(light) returns the unit direction `dir`, when that
 /// direction reaches the light at `distance` where its surface makes cosine `cosLight` with `dir`
-/// (those two matter for surfaces only); `from` is the shading point, which an aggregate's pdf needs.
+/// (those two matter for surfaces only); `from` is the shading point, which a wall's windows need.
 URBIS_HD inline float lightPdf(const SceneView& scene, const LightRecord& light, Vec3f dir, float distance,
                                float cosLight, Vec3f from = {}) {
-    switch (light.kind) {
-    case LightKind::Sun:
-    case LightKind::Moon: {
-        const Sun& disk = diskLight(scene, light.kind);
-        return sunEnabled(disk) && sunContains(disk, dir) ? sunPdf(disk) : 0.0f;
-    }
-    case LightKind::Sky:
-        return skyDirectionPdf(scene.lights.skyTable, dir);
-    case LightKind::EmissiveSurface:
-        return emissiveSurfacePdf(scene.lights.surfaces[light.index], distance, cosLight);
-    case LightKind::Aggregate:  // `dir` from the shading point `from`
-        return wallWindowsPdf(scene.walls[light.index], light.litCells, from, dir);
-    case LightKind::Point:      // a delta light: no direction reaches it by BSDF sampling
-    case LightKind::Spot:
-        return 0.0f;
-    }
-    return 0.0f;
+    return dispatchLight(light.kind, [&](auto kind) {
+        return decltype(kind)::Light::pdf(scene, light, from, dir, distance, cosLight);
+    });
 }
 
 } // namespace urbis

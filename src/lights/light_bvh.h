@@ -7,7 +7,7 @@
 // allocation.
 #pragma once
 
-#include "scene/light_records.h"
+#include "scene/scene_view.h"
 
 namespace urbis {
 
@@ -68,50 +68,51 @@ URBIS_HD inline float lightBvhImportance(const LightBvhNode& node, const LightSa
 
 /// The colliders' share of the choices for the infinite lights: each counts as much as the whole
 /// tree (pbrt-v4's fixed share), `finite` says whether there is anything else to choose.
-URBIS_HD inline float infiniteShare(const LightsView& lights, bool finite) {
-    if (lights.infiniteCount == 0) return 0.0f;
-    return float(lights.infiniteCount) / float(lights.infiniteCount + (finite ? 1u : 0u));
+URBIS_HD inline float infiniteShare(const SceneView& scene, bool finite) {
+    const uint32_t n = scene.infiniteLights.size;
+    if (n == 0) return 0.0f;
+    return float(n) / float(n + (finite ? 1u : 0u));
 }
 
 /// Picks one of the infinite lights uniformly with u in [0, share): its index and probability.
-URBIS_HD inline uint32_t pickInfiniteLight(const LightsView& lights, float share, float u, float& pmf) {
-    const uint32_t n = lights.infiniteCount;
+URBIS_HD inline uint32_t pickInfiniteLight(const SceneView& scene, float share, float u, float& pmf) {
+    const uint32_t n = scene.infiniteLights.size;
     pmf = share / float(n);
-    return lights.infiniteLights[uint32_t(fminf(u / share * float(n), float(n - 1)))];
+    return scene.infiniteLights[uint32_t(fminf(u / share * float(n), float(n - 1)))];
 }
 
 /// The light BVH's share of the choices for the infinite lights: their power against the tree's
 /// (its root's phi), as the power sampler weighs them; all of them where the tree is empty. pbrt-v4
 /// gives each infinite light as much as the whole tree, so that at night a dim sky took half the
 /// picks. Fills `infinitePower`, their power together.
-URBIS_HD inline float bvhInfiniteShare(const LightsView& lights, float& infinitePower) {
+URBIS_HD inline float bvhInfiniteShare(const SceneView& scene, float& infinitePower) {
     infinitePower = 0.0f;
-    for (uint32_t i = 0; i < lights.infiniteCount; ++i) infinitePower += lights.records[lights.infiniteLights[i]].power;
-    if (lights.infiniteCount == 0 || !(infinitePower > 0.0f)) return 0.0f;
-    if (lights.bvhNodeCount == 0) return 1.0f;
-    return infinitePower / (infinitePower + lights.bvhNodes[0].phi);
+    for (uint32_t i = 0; i < scene.infiniteLights.size; ++i) infinitePower += scene.lightRecords[scene.infiniteLights[i]].power;
+    if (scene.infiniteLights.size == 0 || !(infinitePower > 0.0f)) return 0.0f;
+    if (scene.lightBvhNodes.size == 0) return 1.0f;
+    return infinitePower / (infinitePower + scene.lightBvhNodes[0].phi);
 }
 
 /// Picks one of the infinite lights in proportion to its power with u in [0, share) (`share` and
 /// `infinitePower` from bvhInfiniteShare): its index and probability.
-URBIS_HD inline uint32_t pickInfiniteLightByPower(const LightsView& lights, float share, float infinitePower, float u,
+URBIS_HD inline uint32_t pickInfiniteLightByPower(const SceneView& scene, float share, float infinitePower, float u,
                                                   float& pmf) {
     const float target = u / share * infinitePower;
     float sum = 0.0f;
-    uint32_t light = lights.infiniteLights[0];
-    for (uint32_t i = 0; i < lights.infiniteCount; ++i) {
-        light = lights.infiniteLights[i];
-        sum += lights.records[light].power;
-        if (target < sum && lights.records[light].power > 0.0f) break;
+    uint32_t light = scene.infiniteLights[0];
+    for (uint32_t i = 0; i < scene.infiniteLights.size; ++i) {
+        light = scene.infiniteLights[i];
+        sum += scene.lightRecords[light].power;
+        if (target < sum && scene.lightRecords[light].power > 0.0f) break;
     }
-    pmf = share * lights.records[light].power / infinitePower;
+    pmf = share * scene.lightRecords[light].power / infinitePower;
     return light;
 }
 
 /// Whether `light` is one of the infinite lights.
-URBIS_HD inline bool isInfiniteLight(const LightsView& lights, uint32_t light) {
-    for (uint32_t i = 0; i < lights.infiniteCount; ++i)
-        if (lights.infiniteLights[i] == light) return true;
+URBIS_HD inline bool isInfiniteLight(const SceneView& scene, uint32_t light) {
+    for (uint32_t i = 0; i < scene.infiniteLights.size; ++i)
+        if (scene.infiniteLights[i] == light) return true;
     return false;
 }
 
@@ -122,18 +123,19 @@ constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 /// (sum > 0). One expression for sampling and for the pmf, so that both give the same bits.
 URBIS_HD inline float childProbability(float c0, float c1, bool second) { return (second ? c1 : c0) / (c0 + c1); }
 
-/// Picks a light for `ctx` with one uniform number u in [0, 1): its index into lights.records and
+/// Picks a light for `ctx` with one uniform number u in [0, 1): its index into SceneView::lightRecords and
 /// the probability of that pick (kNoLight and 0 where nothing there has importance).
-URBIS_HD inline uint32_t sampleLightBvh(const LightsView& lights, const LightSampleContext& ctx, float u, float& pmf) {
+URBIS_HD inline uint32_t sampleLightBvh(const SceneView& scene, const LightSampleContext& ctx, float u, float& pmf) {
     pmf = 0.0f;
     float infinitePower;
-    const float share = bvhInfiniteShare(lights, infinitePower);
-    if (u < share) return pickInfiniteLightByPower(lights, share, infinitePower, u, pmf);
-    if (lights.bvhNodeCount == 0) return kNoLight;
+    const float share = bvhInfiniteShare(scene, infinitePower);
+    if (u < share) return pickInfiniteLightByPower(scene, share, infinitePower, u, pmf);
+    const ArrayView<LightBvhNode>& nodes = scene.lightBvhNodes;
+    if (nodes.size == 0) return kNoLight;
     u = fminf((u - share) / (1.0f - share), kOneMinusEpsilon);
     float p = 1.0f - share;
     for (uint32_t i = 0;;) {
-        const LightBvhNode& node = lights.bvhNodes[i];
+        const LightBvhNode& node = nodes[i];
         if (node.leaf()) {
             // A root that is a leaf has not had its importance checked by a parent.
             if (i > 0 || lightBvhImportance(node, ctx) > 0.0f) {
@@ -142,8 +144,8 @@ URBIS_HD inline uint32_t sampleLightBvh(const LightsView& lights, const LightSam
             }
             return kNoLight;
         }
-        const float c0 = lightBvhImportance(lights.bvhNodes[i + 1], ctx);
-        const float c1 = lightBvhImportance(lights.bvhNodes[node.index()], ctx);
+        const float c0 = lightBvhImportance(nodes[i + 1], ctx);
+        const float c1 = lightBvhImportance(nodes[node.index()], ctx);
         if (!(c0 + c1 > 0.0f)) return kNoLight;
         const float p0 = childProbability(c0, c1, false);
         const bool second = !(u < p0);
@@ -156,18 +158,19 @@ URBIS_HD inline uint32_t sampleLightBvh(const LightsView& lights, const LightSam
 
 /// Probability that sampleLightBvh(ctx) picks light `index`: its bit trail says which child it lies
 /// under at each depth, and the same importances give each step's probability.
-URBIS_HD inline float lightBvhPmf(const LightsView& lights, const LightSampleContext& ctx, uint32_t index) {
+URBIS_HD inline float lightBvhPmf(const SceneView& scene, const LightSampleContext& ctx, uint32_t index) {
     float infinitePower;
-    const float share = bvhInfiniteShare(lights, infinitePower);
-    uint64_t trail = lights.bvhTrails[index];
+    const float share = bvhInfiniteShare(scene, infinitePower);
+    uint64_t trail = scene.lightBvhTrails[index];
     if (trail == kNoLightTrail)
-        return isInfiniteLight(lights, index) && share > 0.0f ? share * lights.records[index].power / infinitePower : 0.0f;
+        return isInfiniteLight(scene, index) && share > 0.0f ? share * scene.lightRecords[index].power / infinitePower : 0.0f;
+    const ArrayView<LightBvhNode>& nodes = scene.lightBvhNodes;
     float p = 1.0f - share;
     for (uint32_t i = 0;;) {
-        const LightBvhNode& node = lights.bvhNodes[i];
+        const LightBvhNode& node = nodes[i];
         if (node.leaf()) return i > 0 || lightBvhImportance(node, ctx) > 0.0f ? p : 0.0f;
-        const float c0 = lightBvhImportance(lights.bvhNodes[i + 1], ctx);
-        const float c1 = lightBvhImportance(lights.bvhNodes[node.index()], ctx);
+        const float c0 = lightBvhImportance(nodes[i + 1], ctx);
+        const float c1 = lightBvhImportance(nodes[node.index()], ctx);
         if (!(c0 + c1 > 0.0f)) return 0.0f;
         const bool second = (trail & 1u) != 0;
         p *= childProbability(c0, c1, second);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene/light_bounds.h"
+#include "scene/light_bvh_node.h"
 #include "scene/light_records.h"
 
 #include <vector>

@@ -6,11 +6,18 @@
 // through the pane (docs/lights.md § Lit windows).
 #pragma once
 
+#include "geometry/surface_hit.h"
 #include "geometry/wall_parts.h"
+#include "lights/light_build.h"
+#include "lights/light_sample.h"
 #include "math/constants.h"
+#include "math/rng.h"
+#include "math/sampling.h"
 #include "scene/light_bounds.h"
 #include "scene/material.h"
 #include "scene/scene_view.h"
+
+#include <vector>
 
 namespace urbis {
 
@@ -244,5 +251,80 @@ URBIS_HD inline LightBounds wallWindowsLightBounds(const WallRecord& wall, float
     b.phi = phi;
     return b;
 }
+
+/// The lit room's emission and the pane's material of `wall`'s facade.
+URBIS_HD inline Vec3f litRoomEmission(const SceneView& scene, const WallRecord& wall) {
+    return scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)].emission;
+}
+URBIS_HD inline const Material& glassMaterial(const SceneView& scene, const WallRecord& wall) {
+    return scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::Glass)];
+}
+
+/// The lit windows of each wall record (a tile) as a light kind, one light per wall record, at dusk
+/// and at night. Walls emit through it (KindIntersector<WallRecord>::Emitter): their lit rooms, which
+/// a BSDF sample reaches through a pane, so MIS weighs what such a path finds (kFoundThroughPanes,
+/// BounceInfo::windowPath in integrators/path_tracer.h).
+struct WindowLight {
+    static constexpr bool kInfinite = false, kMisWeighs = true, kFoundThroughPanes = true;
+    static constexpr bool kPickDraw = true, kPointDraws = true;  ///< a lit cell, a point of its glass
+
+    URBIS_HD static bool sample(const SceneView& scene, const LightRecord& light, Vec3f from, float u0, float u1,
+                                float u2, LightSample& s) {
+        const WallRecord& wall = scene.walls[light.index];
+        return sampleWallWindows(wall, light.litCells, litRoomEmission(scene, wall), glassMaterial(scene, wall), from, u0,
+                                 u1, u2, s.dir, s.distance, s.pdf, s.radiance);
+    }
+    /// `dir` from the shading point `from`.
+    URBIS_HD static float pdf(const SceneView& scene, const LightRecord& light, Vec3f from, Vec3f dir, float, float) {
+        return wallWindowsPdf(scene.walls[light.index], light.litCells, from, dir);
+    }
+    /// A lit cell of the tile (windowPickCell, as the light sampler picks it), a uniform point of its
+    /// glass, a cosine-distributed direction out of the wall, through the pane.
+    URBIS_HD static bool emitPhoton(const SceneView& scene, const LightRecord& light, const PhotonNumbers& u,
+                                    SampleStream& rng, float scale, EmittedPhoton& out) {
+        const WallRecord& wall = scene.walls[light.index];
+        uint32_t floor, slot;
+        if (!windowPickCell(wall, light.litCells, u.u1, floor, slot)) return false;
+        const CellLayout c = cellLayout(wall, floor, slot);
+        const WindowRect r = windowRect(wall, c);
+        if (!(r.area() > 0.0f)) return false;
+        const float wu = r.u0 + (r.u1 - r.u0) * u.u2, wv = r.v0 + (r.v1 - r.v0) * u.u3;
+        const Vec3f dir = Frame::fromZ(wall.normal).toWorld(sampleCosineHemisphere(u.u4, rng.draw()));
+        out.ray = Ray{wall.worldFromWall(wu, wv, glassPlaneW(wall)) + wall.normal * 1e-3f, dir};
+        out.power = windowRadiance(windowLook(wall, floor, slot), r, litRoomEmission(scene, wall), wu, wv) *
+                    glassTransmission(glassMaterial(scene, wall), dot(dir, wall.normal)) *
+                    (kPi * r.area() / windowPickPmf(tileCellCount(wall), light.litCells) * scale);
+        return true;
+    }
+    /// A lit room's look (litRoomRadiance), light-sampled where walls are lights; any other emitting
+    /// part of a wall its material's emission.
+    URBIS_HD static EmissionAtHit emittedAt(const SceneView& scene, const SurfaceHit& hit, const Material& material,
+                                            const Ray& ray, Vec3f dir) {
+        if (!(maxComponent(material.emission) > 0.0f)) return {};
+        const WallRecord& wall = scene.walls[hit.index];
+        if (hit.material != wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)) return {material.emission};
+        return {litRoomRadiance(wall, material.emission, ray.origin, dir, hit.uv), scene.lights.first<WindowLight>() != kNoLight};
+    }
+    URBIS_HD static uint32_t lightAt(const SceneView& scene, const SurfaceHit& hit) {
+        return scene.lights.first<WindowLight>() + hit.index;
+    }
+
+    /// One light per wall record, in their order: its power the expected flux of its lit windows and
+    /// its count of lit cells, which its sampler picks among (wallWindowsTotals, over TBB).
+    static void addLights(LightListBuilder& b) {
+        if (!b.night || !b.options.windows) return;
+        const Scene& scene = b.scene;
+        std::vector<WallWindowsTotals> totals(scene.walls.size());
+        b.parallelFor(scene.walls.size(), [&](size_t i) {
+            const WallRecord& wall = scene.walls[i];
+            totals[i] = wallWindowsTotals(wall, scene.materials[wall.facadeMaterials + uint32_t(FacadeMaterial::RoomLit)].emission);
+        });
+        for (uint32_t i = 0; i < scene.walls.size(); ++i) b.add(kLightKindOf<WindowLight>, i, totals[i].power, totals[i].litCells);
+    }
+    static LightBounds bounds(const Scene& scene, const LightRecord& light) {
+        return wallWindowsLightBounds(scene.walls[light.index], light.power);
+    }
+    static float photonFlux(const SceneView&, const LightRecord& light, float) { return light.power; }
+};
 
 } // namespace urbis

@@ -94,7 +94,7 @@ std::vector<float> buildPiecewiseConstant2D(const std::vector<float>& func, uint
 
 /// A 1D view over a table of `size` floats built by buildPiecewiseConstant1D (host or device memory;
 /// the integral is read on the host, so it is passed apart).
-inline PiecewiseConstant1DView piecewiseConstant1DView(const float* table, size_t size, float integral) {
+URBIS_HD inline PiecewiseConstant1DView piecewiseConstant1DView(const float* table, size_t size, float integral) {
     if (size < 2) return {};
     const uint32_t n = uint32_t((size - 2) / 2);
     return {table, table + n, n, integral};

@@ -1,7 +1,7 @@
 // What the light BVH knows of one light (host): where it is, which way it emits and how much. Conty
 // Estevez and Kulla 2018, "Importance Sampling of Many Lights with Adaptive Tree Splitting", section
-// 4.1; pbrt-v4 LightBounds. Each light kind has one function that gives its LightBounds
-// (lightBoundsOf in lights/light_build.cpp); the light BVH (lights/light_bvh_build.h) is built from them.
+// 4.1; pbrt-v4 LightBounds. Each light kind gives its LightBounds (its bounds, which lightBoundsOf in
+// lights/light_build.h dispatches to); the light BVH (lights/light_bvh_build.h) is built from them.
 #pragma once
 
 #include "math/bounds.h"

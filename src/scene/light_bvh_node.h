@@ -19,11 +19,11 @@ struct LightBvhNode {
     static constexpr uint32_t kLeafBit = 1u << 31, kTwoSidedBit = 1u << 30, kIndexMask = kTwoSidedBit - 1;
     URBIS_HD bool leaf() const { return (packed & kLeafBit) != 0; }
     URBIS_HD bool twoSided() const { return (packed & kTwoSidedBit) != 0; }
-    /// An interior node's second child, or a leaf's light (index into LightsView::records).
+    /// An interior node's second child, or a leaf's light (index into SceneView::lightRecords).
     URBIS_HD uint32_t index() const { return packed & kIndexMask; }
 };
 
-/// LightsView::bvhTrails of a light the BVH does not hold (an infinite light, a light of no power).
+/// SceneView::lightBvhTrails of a light the BVH does not hold (an infinite light, a light of no power).
 constexpr uint64_t kNoLightTrail = ~uint64_t(0);
 
 } // namespace urbis

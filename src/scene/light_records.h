@@ -1,33 +1,73 @@
-// Light records (host+device POD) and the view of the scene's light arrays. A light is a tag and an
-// index into the array of its kind; the functions over them (sampling, pdf) live in lights/.
+// Light records (host+device POD) and the list of light kinds. A light of the sampler's list is a
+// kind and an index into the array of its kind; each kind's functions (sampling, pdf, power, bounds,
+// photons) live in its own header in lights/, which lights/light.h folds over.
 #pragma once
 
-#include "math/piecewise_constant.h"
 #include "math/vec.h"
 #include "scene/lamp_record.h"
-#include "scene/light_bvh_node.h"
 
 #include <cstdint>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 
 namespace urbis {
 
-/// The closed set of light kinds; lights/light.h dispatches on it with a switch.
-enum class LightKind : uint32_t {
-    Sun,              ///< SceneView::sun: a disk of directions
-    Sky,              ///< SceneView::sky: the environment, importance-sampled from its radiance
-    Moon,             ///< SceneView::night.moon: a disk of directions, as the sun
-    EmissiveSurface,  ///< LightsView::surfaces[index]: the triangles of one emitting material
-    Point,            ///< LightsView::lampLights[index]: a street lamp, a point with a profile by head shape
-    Spot,             ///< reserved: spot lamps (with a cone and profile), not built yet
-    Aggregate,        ///< SceneView::walls[index]: the lit windows of one wall record (tile), as one light
+template <typename... Kinds>
+struct LightKindList {
+    static constexpr uint32_t count = sizeof...(Kinds);
+    using Tuple = std::tuple<Kinds...>;
 };
+
+struct SunLight;              ///< lights/sun_light.h: SceneView::sun, a disk of directions
+struct SkyLight;              ///< lights/sky_light.h: the environment, importance-sampled from its radiance
+struct MoonLight;             ///< lights/moon_light.h: SceneView::night.moon, a disk of directions as the sun
+struct EmissiveSurfaceLight;  ///< lights/emissive_surface_light.h: SceneView::emissiveSurfaces[index]
+struct LampLight;             ///< lights/lamp_light.h: SceneView::lampLights[index], a street lamp's point
+struct WindowLight;           ///< lights/window_light.h: SceneView::walls[index], a wall record's lit windows
+
+/// Every light kind; its place in the list is LightRecord::kind. buildLights adds each kind's lights
+/// in this order, so the list's records are the sun, the sky, the moon, the emitting triangles, the
+/// lamps and the walls.
+using LightKinds = LightKindList<SunLight, SkyLight, MoonLight, EmissiveSurfaceLight, LampLight, WindowLight>;
+inline constexpr uint32_t kLightKindCount = LightKinds::count;
+
+/// The light kind of index `I`.
+template <uint32_t I>
+using LightKindAt = std::tuple_element_t<I, LightKinds::Tuple>;
+
+template <typename Light, uint32_t... I>
+constexpr uint32_t lightKindOf(std::integer_sequence<uint32_t, I...>) {
+    const bool same[] = {std::is_same_v<Light, LightKindAt<I>>...};
+    for (uint32_t i = 0; i < sizeof...(I); ++i)
+        if (same[i]) return i;
+    return kLightKindCount;
+}
+/// The index of light kind `Light`.
+template <typename Light>
+inline constexpr uint32_t kLightKindOf = lightKindOf<Light>(std::make_integer_sequence<uint32_t, kLightKindCount>{});
+
+/// The tag a fold over the light kinds passes: the kind index as a constant.
+template <uint32_t I>
+struct LightKindTag {
+    static constexpr uint32_t index = I;
+    using Light = LightKindAt<I>;
+};
+
+/// Calls f(LightKindTag<I>{}) for every kind I, in the list's order (host code: the build).
+template <typename F>
+constexpr void forEachLightKind(F&& f) {
+    [&]<uint32_t... I>(std::integer_sequence<uint32_t, I...>) {
+        (f(LightKindTag<I>{}), ...);
+    }(std::make_integer_sequence<uint32_t, kLightKindCount>{});
+}
 
 /// One light of the sampler's list.
 struct LightRecord {
-    LightKind kind = LightKind::Sun;
+    uint32_t kind = 0;   ///< index into LightKinds
     uint32_t index = 0;  ///< into the array of its kind (0 for the sun, the moon and the sky)
-    float power = 0;     ///< luminous flux in the renderer's units (lights/light_build.cpp says how)
-    uint32_t litCells = 0;  ///< Aggregate: the lit cells of its tile, which its sampler picks among (lights/window_light.h)
+    float power = 0;     ///< luminous flux in the renderer's units (each kind's addLights says how)
+    uint32_t litCells = 0;  ///< WindowLight: the lit cells of its tile, which its sampler picks among (lights/window_light.h)
 };
 
 /// An emitting surface: triangles of one emitting material, sampled uniformly by area. It emits
@@ -35,7 +75,7 @@ struct LightRecord {
 /// the light BVH can tell near emitters from far ones (docs/lights.md § Emitting triangles).
 struct EmissiveSurface {
     Vec3f emission;
-    uint32_t firstTriangle = 0, triangleCount = 0;  ///< range of LightsView::triangles
+    uint32_t firstTriangle = 0, triangleCount = 0;  ///< range of SceneView::triangleLights
     float area = 0;                                 ///< total, square metres
 };
 
@@ -47,7 +87,7 @@ struct TriangleLight {
 };
 
 /// A street lamp as a light (lights/lamp_light.h): a point at its glass whose intensity follows a
-/// profile by head shape, made from a LampRecord at scene build (lights/light_build.cpp).
+/// profile by head shape, made from a LampRecord at scene build (lampEmitterOf).
 struct LampEmitter {
     Vec3f position;          ///< world, metres: the glass's centre
     Vec3f intensity;         ///< at the profile's peak, renderer units (radiance x m^2, docs/lights.md § Units)
@@ -62,35 +102,9 @@ struct LampEmitter {
 constexpr uint32_t kNoLight = 0xffffffffu;
 
 /// A light-sampled emitting triangle: its index in SceneView::triangles and its light. Sorted by
-/// triangle, so that the light a BSDF sample found is a binary search (lights/light_sampler.h).
+/// triangle, so that the light a BSDF sample found is a binary search (lights/emissive_surface_light.h).
 struct EmitterTriangle {
     uint32_t triangle = 0, light = 0;
-};
-
-/// What per-ray code sees of the scene's lights. Not built (buildLights was not called), it stands
-/// for the list {sun}: the sun is light-sampled, the sky and emitters are found by BSDF sampling
-/// and counted in full (the path tracer's estimator before MIS).
-struct LightsView {
-    bool built = false;
-    const LightRecord* records = nullptr;
-    uint32_t count = 0;
-    PiecewiseConstant1DView power;                ///< over records: the power-weighted choice
-    const EmissiveSurface* surfaces = nullptr;
-    const TriangleLight* triangles = nullptr;
-    const LampEmitter* lampLights = nullptr;        ///< per lamp record (SceneView::lamps), when lamps are lights
-    /// Lamp i is light firstLampLight + i and wall record i light firstWallLight + i (kNoLight: none are).
-    uint32_t firstLampLight = kNoLight, firstWallLight = kNoLight;
-    const EmitterTriangle* emitterTriangles = nullptr;  ///< sorted by triangle
-    uint32_t emitterCount = 0;
-    const LightBvhNode* bvhNodes = nullptr;       ///< the light BVH over the lights of finite extent (lights/light_bvh.h)
-    uint32_t bvhNodeCount = 0;
-    const uint64_t* bvhTrails = nullptr;          ///< per light: its path from the root (bit d: second child at depth d), or kNoLightTrail
-    const uint32_t* infiniteLights = nullptr;     ///< the lights the BVH leaves out that are sampled apart (sun, sky)
-    uint32_t infiniteCount = 0;
-    float colliderRadius = 0;                     ///< metres: the colliders sampler's sphere about each light (lights/collider_lights.h)
-    PiecewiseConstant2DView skyTable;             ///< over (u, v) of the sky's equal-area map (lights/sky_light.h)
-    uint32_t sunLight = 0, skyLight = kNoLight;   ///< their places in records, or kNoLight
-    uint32_t moonLight = kNoLight;
 };
 
 } // namespace urbis

@@ -5,12 +5,27 @@
 
 #include "accel/wide_bvh_node.h"
 #include "scene/cloud_layer.h"
+#include "scene/light_bvh_node.h"
 #include "scene/light_records.h"
 #include "scene/material.h"
 #include "scene/prim_kinds.h"
 #include "scene/road_segment.h"
 
 #include <cstdint>
+
+// What buildLights makes (lights/light_build.h): the light list, each light kind's arrays, the light
+// BVH and the sky's table. A new light kind's arrays go here.
+#define URBIS_LIGHT_ARRAYS(X)                          \
+    X(LightRecord, lightRecords, "light_records")      \
+    X(float, lightPower, "light_power")                \
+    X(EmissiveSurface, emissiveSurfaces, "emissive_surfaces") \
+    X(TriangleLight, triangleLights, "triangle_lights") \
+    X(LampEmitter, lampLights, "lamp_lights")            \
+    X(EmitterTriangle, emitterTriangles, "emitter_triangles") \
+    X(LightBvhNode, lightBvhNodes, "light_bvh")        \
+    X(uint64_t, lightBvhTrails, "light_bvh_trails")    \
+    X(uint32_t, infiniteLights, "infinite_lights")     \
+    X(float, skyTable, "sky_table")
 
 // X(Type, member, "stats key"): in leaf order where the BVH's leaves reach them.
 #define URBIS_SCENE_ARRAYS(X)                          \
@@ -23,16 +38,7 @@
     X(LampRecord, lamps, "lamps")                      \
     X(Material, materials, "materials")                \
     X(RoadSegment, roadSegments, "road_segments")      \
-    X(LightRecord, lightRecords, "light_records")      \
-    X(float, lightPower, "light_power")                \
-    X(EmissiveSurface, emissiveSurfaces, "emissive_surfaces") \
-    X(TriangleLight, triangleLights, "triangle_lights") \
-    X(LampEmitter, lampLights, "lamp_lights")            \
-    X(EmitterTriangle, emitterTriangles, "emitter_triangles") \
-    X(LightBvhNode, lightBvhNodes, "light_bvh")        \
-    X(uint64_t, lightBvhTrails, "light_bvh_trails")    \
-    X(uint32_t, infiniteLights, "infinite_lights")     \
-    X(float, skyTable, "sky_table")                    \
+    URBIS_LIGHT_ARRAYS(X)                              \
     X(Vec3f, transmittanceLut, "transmittance_lut")    \
     X(Vec3f, multiScatteringLut, "multiscattering_lut") \
     X(Vec3f, skyViewLut, "sky_view_lut")               \

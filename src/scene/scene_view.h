@@ -30,7 +30,7 @@ struct SceneView {
     Sun sun;
     Sky sky;
     NightSky night;                      ///< the moon (a disk like the sun) and the stars
-    LightsView lights;                   ///< the light sampler's list and tables (not built: sun and sky)
+    LightListInfo lights;                ///< beside the light arrays: each kind's place in the list (not built: {sun})
     PhotonsView photons;                 ///< the photon pass's map or buffers (photon integrators only)
 
     /// The first leaf slot of kind I.
@@ -59,7 +59,7 @@ SceneView makeSceneView(const auto& arrays, const Sun& sun, const Sky& sky, cons
     view.sun = sun;
     view.sky = sky;
     view.night = night;
-    view.lights = makeLightsView(arrays, lights);
+    view.lights = lights;
     return view;
 }
 
