@@ -25,7 +25,8 @@ std::string listText(const T* values, size_t n) {
     for (size_t i = 0; i < n; ++i) {
         char number[32];
         std::snprintf(number, sizeof number, "%g", double(values[i]));
-        text += (i ? "," : "") + std::string(number);
+        if (i) text += ',';
+        text += number;
     }
     return text;
 }
@@ -95,7 +96,7 @@ public:
         std::string& text = line_.texts_.emplace_back();
         CLI::Option* option = start<Vec3f>(f, [&] { return add(f, text); });
         if (!option) return;
-        option->type_name("R,G,B")->default_str(listText(&value.x, 3));
+        option->type_name(lo < 0.0f ? "X,Y,Z" : "R,G,B")->default_str(listText(&value.x, 3));   // a point, or a colour
         keep<Vec3f>(f, option, [&text, flag = f.flag, lo, hi](Vec3f& field) {
             field = vec3Of(numbersIn<float, 3>(flag, text, lo, hi));
         });

@@ -266,7 +266,7 @@ void visitSceneFields(Description& d, Visitor& v) {
     v.object("clouds", [&] {
         auto& c = d.clouds.layer;
         v.number({"coverage", "--clouds",
-                  "Cloud coverage, 0 (none) to 1 (overcast); the layer's other parameters are the scene file's `clouds`"},
+                  "Cloud coverage, 0 (none) to 1 (overcast)"},
                  c.coverage, 0.0f, 1.0f);
         v.choice({"type", "--clouds-type", "cumulus (heaps), stratus (sheets) or uniform (a slab: fog)"}, d.clouds.type,
                  kCloudTypes);
