@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
         const Run run = renderFor(view, camera, settings, seconds, UINT32_MAX);
         const double error = relativeMse(run.image, reference.image);
         if (kind == LightSamplerKind::Bvh) bvh = error;
-        std::printf("| %s | %u | %.4g | %.2f |\n", kLightSamplers[uint32_t(kind)], run.spp, error, error / bvh);
+        std::printf("| %s | %u | %.4g | %.2f |\n", nameOfChoice(kLightSamplers, kind), run.spp, error, error / bvh);
         std::fflush(stdout);
     }
     return 0;

@@ -1,38 +1,320 @@
 #include "app/scene_options.h"
 
+#include "app/compound_options.h"
 #include "app/option_parsing.h"
-#include "astro/civil_time.h"
-#include "description/scene_checks.h"
-#include "description/scene_json.h"
-#include "layout/city_layout.h"
 #include "base/input_error.h"
+#include "description/building_type_names.h"
+#include "description/scene_checks.h"
+#include "description/scene_fields.h"
+#include "description/scene_json.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
 
 namespace urbis {
 
 namespace {
 
-Vec3f vec3Of(const std::vector<double>& v, size_t first) {
-    return Vec3f{float(v[first]), float(v[first + 1]), float(v[first + 2])};
+/// `values` as the command line writes them: "3.3,3.1,2.8".
+template <typename T>
+std::string listText(const T* values, size_t n) {
+    std::string text;
+    for (size_t i = 0; i < n; ++i) {
+        char number[32];
+        std::snprintf(number, sizeof number, "%g", double(values[i]));
+        if (i) text += ',';
+        text += number;
+    }
+    return text;
+}
+
+/// N numbers separated by commas, each in [lo, hi]; throws a usage InputError naming `flag`.
+template <typename T, size_t N>
+std::array<T, N> numbersIn(const char* flag, const std::string& text, T lo, T hi) {
+    const std::vector<double> v = parseNumberList(flag, text, ',', N, N);
+    std::array<T, N> out{};
+    for (size_t i = 0; i < N; ++i) {
+        if (!(v[i] >= double(lo) && v[i] <= double(hi)))
+            throw InputError(std::string(flag) + ": each number must be in [" + listText(&lo, 1) + ", " + listText(&hi, 1) +
+                                 "], got '" + text + "'",
+                             FailureKind::Usage);
+        out[i] = T(v[i]);
+    }
+    return out;
+}
+
+Vec3f vec3Of(const std::array<float, 3>& a) { return Vec3f{a[0], a[1], a[2]}; }
+
+template <typename Table>
+std::vector<std::string> namesOf(const Table& table) {
+    std::vector<std::string> names;
+    for (const auto& entry : table) names.emplace_back(choiceName(entry));
+    return names;
 }
 
 } // namespace
 
+/// Registers an option for each field of visitSceneFields (over the storage `values_`): a number or
+/// a text bound to its field, checked against its range or its choices; a boolean as a switch
+/// ("--no-..." sets it false); vectors, lists and colour maps as texts parsed when applied; the
+/// compound options where their first key is visited.
+class SceneCommandLine::Binder {
+public:
+    Binder(SceneCommandLine& line, CLI::App& cmd) : line_(line), cmd_(cmd) {}
+
+    template <typename F>
+    void object(const char* key, F&& fields) {
+        if (depth_++ == 0) group_ = std::string("Scene: ") + key;
+        fields();
+        --depth_;
+    }
+
+    template <typename T, typename F>
+    void optionalObject(const Field& f, std::optional<T>& value, F&& fields) {
+        if (depth_ == 0) group_ = std::string("Scene: ") + f.key;
+        compound(f);
+        if (!value) value.emplace();   // the storage of its keys' options
+        object(f.key, [&] { fields(*value); });
+    }
+
+    template <typename T>
+    void number(const Field& f, T& value, std::type_identity_t<T> lo, std::type_identity_t<T> hi) {
+        CLI::Option* option = start<T>(f, [&] { return add(f, value); });
+        if (!option) return;
+        if (lo != std::numeric_limits<T>::lowest() || hi != std::numeric_limits<T>::max()) {
+            if constexpr (std::is_floating_point_v<T>) option->check(CLI::Range(double(lo), double(hi)));
+            else option->check(CLI::Range(lo, hi));
+        }
+        option->capture_default_str();
+        keep<T>(f, option, [&value](T& field) { field = value; });
+    }
+
+    void vec3(const Field& f, Vec3f& value, float lo, float hi) {
+        std::string& text = line_.texts_.emplace_back();
+        CLI::Option* option = start<Vec3f>(f, [&] { return add(f, text); });
+        if (!option) return;
+        option->type_name(lo < 0.0f ? "X,Y,Z" : "R,G,B")->default_str(listText(&value.x, 3));   // a point, or a colour
+        keep<Vec3f>(f, option, [&text, flag = f.flag, lo, hi](Vec3f& field) {
+            field = vec3Of(numbersIn<float, 3>(flag, text, lo, hi));
+        });
+    }
+
+    void optionalVec3(const Field& f, std::optional<Vec3f>&, float lo, float hi) {
+        std::string& text = line_.texts_.emplace_back();
+        CLI::Option* option = start<std::optional<Vec3f>>(f, [&] { return add(f, text); });
+        if (!option) return;
+        option->type_name("X,Y,Z|none");
+        keep<std::optional<Vec3f>>(f, option, [&text, flag = f.flag, lo, hi](std::optional<Vec3f>& field) {
+            if (text == "none") field.reset();
+            else field = vec3Of(numbersIn<float, 3>(flag, text, lo, hi));
+        });
+    }
+
+    template <typename T, size_t N>
+    void optionalArray(const Field& f, std::optional<std::array<T, N>>&, T lo, T hi) {
+        std::string& text = line_.texts_.emplace_back();
+        CLI::Option* option = start<std::optional<std::array<T, N>>>(f, [&] { return add(f, text); });
+        if (!option) return;
+        option->type_name(std::to_string(N) + " NUMBERS|none");
+        keep<std::optional<std::array<T, N>>>(f, option, [&text, flag = f.flag, lo, hi](std::optional<std::array<T, N>>& field) {
+            if (text == "none") field.reset();
+            else field = numbersIn<T, N>(flag, text, lo, hi);
+        });
+    }
+
+    void text(const Field& f, std::string& value) {
+        CLI::Option* option = start<std::string>(f, [&] { return add(f, value); });
+        if (!option) return;
+        if (!value.empty()) option->capture_default_str();
+        keep<std::string>(f, option, [&value](std::string& field) { field = value; });
+    }
+
+    void boolean(const Field& f, bool&) {
+        const bool negated = std::string_view(f.flag).starts_with("--no-");
+        bool& given = line_.switches_.emplace_back(false);
+        CLI::Option* option = start<bool>(f, [&] { return cmd_.add_flag(f.flag, given, f.help)->group(group_); });
+        if (!option) return;
+        keep<bool>(f, option, [&given, negated](bool& field) { field = negated ? !given : given; });
+    }
+
+    template <typename Table>
+    void choice(const Field& f, std::string& value, const Table& table) {
+        CLI::Option* option = start<std::string>(f, [&] { return add(f, value); });
+        if (!option) return;
+        option->check(CLI::IsMember(namesOf(table)))->capture_default_str();
+        keep<std::string>(f, option, [&value](std::string& field) { field = value; });
+    }
+
+    template <typename Table>
+    void choiceList(const Field& f, std::vector<std::string>& value, const Table& table) {
+        std::string& text = line_.texts_.emplace_back();
+        using Names = std::vector<std::string>;
+        CLI::Option* option = start<Names>(f, [&] { return add(f, text); });
+        if (!option) return;
+        const Names names = namesOf(table);
+        std::string all;
+        for (const std::string& name : names) all += (all.empty() ? "" : ",") + name;
+        option->type_name("NAME,...|none");
+        std::string shown;
+        for (const std::string& name : value) shown += (shown.empty() ? "" : ",") + name;
+        option->default_str(shown);
+        keep<Names>(f, option, [&text, names, all, flag = std::string(f.flag)](Names& field) {
+            Names chosen;
+            size_t start = 0;
+            while (text != "none" && start <= text.size()) {
+                const size_t end = std::min(text.find(',', start), text.size());
+                const std::string name = text.substr(start, end - start);
+                if (std::find(names.begin(), names.end(), name) == names.end())
+                    throw InputError(flag + ": '" + name + "' is not one of " + all + " (or none)", FailureKind::Usage);
+                if (std::find(chosen.begin(), chosen.end(), name) == chosen.end()) chosen.push_back(name);
+                start = end + 1;
+            }
+            field = std::move(chosen);
+        });
+    }
+
+    template <typename E, size_t N>
+    void enumeration(const Field& f, E& value, const Choice<E> (&table)[N]) {
+        std::string& text = line_.texts_.emplace_back(nameOfChoice(table, value));
+        CLI::Option* option = start<E>(f, [&] { return add(f, text); });
+        if (!option) return;
+        option->check(CLI::IsMember(namesOf(table)))->capture_default_str();
+        keep<E>(f, option, [&text, &table](E& field) { field = choiceNamed(table, text).value_or(field); });
+    }
+
+    void colourMap(const Field& f, std::map<std::string, Vec3f>&) {
+        using Colours = std::map<std::string, Vec3f>;
+        std::vector<std::string>& items = line_.lists_.emplace_back();
+        CLI::Option* option = start<Colours>(f, [&] { return cmd_.add_option(f.flag, items, f.help)->group(group_); });
+        if (!option) return;
+        option->type_name("TYPE=R,G,B")->take_all();
+        keep<Colours>(f, option, [&items, flag = f.flag](Colours& field) {
+            for (const std::string& item : items) {
+                const size_t equals = item.find('=');
+                const std::string type = item.substr(0, std::min(equals, item.size()));
+                if (equals == std::string::npos || !buildingTypeNamed(type))
+                    throw InputError(std::string(flag) + ": need TYPE=R,G,B with a building type (" + buildingTypeNameList() +
+                                         "), got '" + item + "'",
+                                     FailureKind::Usage);
+                field[type] = vec3Of(numbersIn<float, 3>(flag, item.substr(equals + 1), 0.0f, 1.0f));
+            }
+        });
+    }
+
+    /// Keyframes are the scene file's alone (docs/animation.md): no option sets them.
+    template <typename Keyframes>
+    void keyframes(const Field&, Keyframes&) {}
+
+private:
+    /// Registers the compound option `f` names, once; true where `f` names one.
+    bool compound(const Field& f) {
+        const CompoundOption* it = compoundOptionNamed(f.flag);
+        if (!it) return false;
+        const size_t order = size_t(it - compoundOptions().data());
+        if (!line_.wanted(f.flag) || line_.compounds_.count(order)) return true;
+        std::string& value = line_.texts_.emplace_back(it->defaultText);
+        CLI::Option* option = cmd_.add_option(it->flag, value, it->help)->group(group_);
+        if (!it->defaultText.empty()) option->capture_default_str();
+        if (it->valueOptional) option->expected(0, 1);
+        line_.compounds_[order] = {option, &value};
+        return true;
+    }
+
+    /// The option of `f`, registered by `add`: nullptr where it is a compound's, not wanted, or
+    /// already registered by a key that shares it (of the same type `T`).
+    template <typename T, typename Add>
+    CLI::Option* start(const Field& f, Add&& add) {
+        if (compound(f) || !line_.wanted(f.flag)) return nullptr;
+        if (const auto it = line_.keyOptions_.find(f.flag); it != line_.keyOptions_.end()) {
+            if (*it->second.type != typeid(T)) throw std::logic_error(std::string(f.flag) + " names keys of two types");
+            return nullptr;
+        }
+        return add();
+    }
+
+    template <typename Storage>
+    CLI::Option* add(const Field& f, Storage& storage) {
+        return cmd_.add_option(f.flag, storage, f.help)->group(group_);
+    }
+
+    template <typename T, typename Assign>
+    void keep(const Field& f, CLI::Option* option, Assign assign) {
+        line_.keyOptions_[f.flag] = {option, &typeid(T), [assign](void* field) { assign(*static_cast<T*>(field)); }};
+    }
+
+    SceneCommandLine& line_;
+    CLI::App& cmd_;
+    std::string group_;
+    int depth_ = 0;
+};
+
+/// Applies the options given on the command line to the fields of a description, walking
+/// visitSceneFields over it.
+class SceneCommandLine::Applier {
+public:
+    explicit Applier(const SceneCommandLine& line) : line_(line) {}
+
+    template <typename F>
+    void object(const char*, F&& fields) {
+        fields();
+    }
+
+    template <typename T, typename F>
+    void optionalObject(const Field& f, std::optional<T>& value, F&& fields) {
+        if (value) {
+            fields(*value);
+            return;
+        }
+        T unset{};   // its keys' options need the object itself first
+        const Field* outer = unset_;
+        unset_ = &f;
+        fields(unset);
+        unset_ = outer;
+    }
+
+    template <typename T, typename... Range>
+    void number(const Field& f, T& value, Range&&...) { apply(f, &value); }
+    template <typename T, typename... Range>
+    void vec3(const Field& f, T& value, Range&&...) { apply(f, &value); }
+    template <typename T, typename... Range>
+    void optionalVec3(const Field& f, T& value, Range&&...) { apply(f, &value); }
+    template <typename T, typename... Range>
+    void optionalArray(const Field& f, T& value, Range&&...) { apply(f, &value); }
+    void text(const Field& f, std::string& value) { apply(f, &value); }
+    void boolean(const Field& f, bool& value) { apply(f, &value); }
+    template <typename T, typename Table>
+    void choice(const Field& f, T& value, const Table&) { apply(f, &value); }
+    template <typename T, typename Table>
+    void choiceList(const Field& f, T& value, const Table&) { apply(f, &value); }
+    template <typename T, typename Table>
+    void enumeration(const Field& f, T& value, const Table&) { apply(f, &value); }
+    template <typename T>
+    void colourMap(const Field& f, T& value) { apply(f, &value); }
+    template <typename T>
+    void keyframes(const Field&, T&) {}
+
+private:
+    void apply(const Field& f, void* field) const {
+        const auto it = line_.keyOptions_.find(f.flag ? f.flag : "");
+        if (it == line_.keyOptions_.end() || it->second.option->count() == 0) return;
+        if (unset_)
+            throw InputError(std::string(f.flag) + ": sets a key of " + unset_->key + " and needs " + unset_->flag +
+                                 " (or the scene file's " + unset_->key + ")",
+                             FailureKind::Usage);
+        it->second.assign(field);
+    }
+
+    const SceneCommandLine& line_;
+    const Field* unset_ = nullptr;
+};
+
 SceneCommandLine::SceneCommandLine(SceneDescription defaults) : defaults_(std::move(defaults)), values_(defaults_) {}
 
-bool SceneCommandLine::wanted(std::string_view name) const {
-    return only_.empty() || std::find(only_.begin(), only_.end(), name) != only_.end();
-}
-
-template <typename T, typename Apply>
-CLI::Option* SceneCommandLine::bind(CLI::App& cmd, const std::string& name, T& storage, const std::string& help,
-                                    Apply apply) {
-    if (!wanted(name)) return nullptr;
-    CLI::Option* option = cmd.add_option(name, storage, help);
-    overrides_.emplace_back(option, [&storage, apply](SceneDescription& d) { apply(d, storage); });
-    return option;
+bool SceneCommandLine::wanted(std::string_view flag) const {
+    return only_.empty() || std::find(only_.begin(), only_.end(), flag) != only_.end();
 }
 
 void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::string_view> only) {
@@ -41,229 +323,18 @@ void SceneCommandLine::addOptions(CLI::App& cmd, std::initializer_list<std::stri
                    "Scene file (.json, docs/scene_files.md) to render; the options given here override its keys");
     cmd.add_option("--save-scene", saveScene_,
                    "Write the scene this command amounts to (every key) to a .json file, then go on");
-    SceneDescription& v = values_;
-    const auto range = [](CLI::Option* option, auto lo, auto hi) {
-        if (option) option->check(CLI::Range(lo, hi))->capture_default_str();
-    };
-    const auto withDefault = [](CLI::Option* option) {
-        if (option) option->capture_default_str();
-    };
-
-    // source
-    bind(cmd, "--osm", v.source.osm, "OpenStreetMap file: .osm, .osm.pbf, .osm.bz2, .osm.gz (default: the generated city)",
-         [](SceneDescription& d, const std::string& osm) { d.source.osm = osm; });
-    bind(cmd, "--bbox", text_.bbox, "Crop OSM to MINLON,MINLAT,MAXLON,MAXLAT (default: the file's header box)",
-         [](SceneDescription& d, const std::string& text) { d.source.bbox = parseBbox(text); });
-    const LayoutParams layout;
-    bind(cmd, "--building-height-range", text_.heightRange,
-         "MIN:MAX metres, seeded uniform, for OSM buildings without height or levels tags (without it their heights "
-         "are estimated from tagged neighbours of their type and a table of types) and for the generated city (default " +
-             std::to_string(int(layout.minBuildingHeight)) + ":" + std::to_string(int(layout.maxBuildingHeight)) + ")",
-         [](SceneDescription& d, const std::string& text) {
-             std::vector<double> r = parseNumberList("--building-height-range", text, ':', 2, 2);
-             if (!(r[0] >= 0.0 && r[0] <= r[1] && r[1] <= 1000.0))
-                 throw InputError("--building-height-range: need 0 <= MIN <= MAX <= 1000 metres, got '" + text + "'",
-                                  FailureKind::Usage);
-             d.source.heightRange = std::array<float, 2>{float(r[0]), float(r[1])};
-         });
-    range(bind(cmd, "--metres-per-level", v.source.metresPerLevel, "Storey height for building:levels",
-               [](SceneDescription& d, float m) { d.source.metresPerLevel = m; }),
-          1.0, 20.0);
-    range(bind(cmd, "--height-scale", v.source.heightScale, "Multiply every building's height (and min height)",
-               [](SceneDescription& d, float s) { d.source.heightScale = s; }),
-          0.05, 50.0);
-    range(bind(cmd, "--buildings", v.source.buildings, "Buildings in the generated city",
-               [](SceneDescription& d, uint64_t n) { d.source.buildings = n; }),
-          uint64_t(1), kMaxDescribedBuildings);
-    withDefault(bind(cmd, "--seed", v.integrator.seed, "Seed of the city and of the sampler",
-                     [](SceneDescription& d, uint32_t seed) { d.source.seed = d.integrator.seed = seed; }));
-
-    // camera
-    bind(cmd, "--camera", text_.camera, "X,Y,Z,TX,TY,TZ: position and target in world metres (x east, y up, z south)",
-         [](SceneDescription& d, const std::string& text) {
-             std::vector<double> c = parseNumberList("--camera", text, ',', 6, 6);
-             d.camera.position = vec3Of(c, 0);
-             d.camera.target = vec3Of(c, 3);
-             d.camera.geo.reset();
-         });
-    CLI::Option* geo =
-        bind(cmd, "--camera-geo", text_.cameraGeo,
-             "LON,LAT,ALTITUDE,HEADING,PITCH (OSM only; degrees, metres above y = 0, sea level on a DEM; "
-             "ALTITUDE with the suffix agl, as 50agl: metres above the terrain under the camera)",
-             [](SceneDescription& d, const std::string& text) {
-                 // ALTITUDE may end in "agl" (above ground level): the third field, before its comma.
-                 std::string numbers = text;
-                 size_t third = numbers.find(',');
-                 if (third != std::string::npos) third = numbers.find(',', third + 1);
-                 const size_t end = third == std::string::npos ? std::string::npos : numbers.find(',', third + 1);
-                 const bool agl = end != std::string::npos && end >= third + 4 && numbers.compare(end - 3, 3, "agl") == 0;
-                 if (agl) numbers.erase(end - 3, 3);
-                 std::vector<double> c = parseNumberList("--camera-geo", numbers, ',', 5, 5);
-                 d.camera.geo = GeoCameraDescription{c[0], c[1], float(c[2]), float(c[3]), float(c[4]), agl};
-                 d.camera.position.reset();
-                 d.camera.target.reset();
-             });
-    if (geo && cmd.get_option_no_throw("--camera")) geo->excludes("--camera");
-    range(bind(cmd, "--fov", v.camera.fov, "Vertical field of view, degrees",
-               [](SceneDescription& d, float fov) { d.camera.fov = fov; }),
-          1.0, 170.0);
-    range(bind(cmd, "--fps", v.animation.fps, "Frames per second of the scene's animation (docs/animation.md)",
-               [](SceneDescription& d, float fps) { d.animation.fps = fps; }),
-          0.01, 1000.0);
-
-    // date, time and place; registered before --sun, whose angles override the time's sun
-    bind(cmd, "--time", text_.time,
-         "ISO 8601 date and time with a UTC offset or Z (2024-06-21T20:30+02:00): sets the sun, the moon and the stars",
-         [](SceneDescription& d, const std::string& text) {
-             std::string error;
-             if (!parseIsoTime(text, error)) throw InputError("--time: '" + text + "': " + error, FailureKind::Usage);
-             d.astronomy.time = text;
-             d.astronomy.sunFromTime = true;
-         });
-    char place[48];
-    std::snprintf(place, sizeof place, "%.4f,%.4f", kDefaultLocation[0], kDefaultLocation[1]);
-    bind(cmd, "--location", text_.location,
-         std::string("LON,LAT in degrees the sky is seen from (default: the OSM extract's centre; the generated city: "
-                     "Prague, ") + place + ")",
-         [](SceneDescription& d, const std::string& text) { d.astronomy.location = parseLocation("--location", text); });
-
-    // sun
-    text_.sun = std::to_string(int(v.sun.elevation)) + "," + std::to_string(int(v.sun.azimuth));
-    withDefault(bind(cmd, "--sun", text_.sun, "ELEVATION,AZIMUTH of the sun in degrees (azimuth clockwise from north)",
-                     [](SceneDescription& d, const std::string& text) {
-                         std::vector<double> s = parseNumberList("--sun", text, ',', 2, 2);
-                         if (!(s[0] >= -90.0 && s[0] <= 90.0))
-                             throw InputError("--sun: elevation must be in [-90, 90] degrees", FailureKind::Usage);
-                         if (!(s[1] >= -360.0 && s[1] <= 360.0))
-                             throw InputError("--sun: azimuth must be in [-360, 360] degrees", FailureKind::Usage);
-                         d.sun.elevation = float(s[0]);
-                         d.sun.azimuth = float(s[1]);
-                         d.astronomy.sunFromTime = false;
-                     }));
-    if (wanted("--no-aerial-perspective")) {
-        CLI::Option* flag = cmd.add_flag("--no-aerial-perspective", noAerialPerspective_,
-                                         "No haze along path segments (the atmosphere still gives the sky and the sun)");
-        overrides_.emplace_back(flag, [](SceneDescription& d) { d.sky.aerialPerspective = false; });
-    }
-    if (CLI::Option* sky = bind(cmd, "--sky", v.sky.model, "Sky model: atmosphere (Hillaire 2020) or analytic (a gradient)",
-                                [](SceneDescription& d, const std::string& s) { d.sky.model = s; }))
-        sky->check(CLI::IsMember(std::vector<std::string>(std::begin(kSkyModels), std::end(kSkyModels))))->capture_default_str();
-    range(bind(cmd, "--sun-radius", v.sun.angularRadius, "Angular radius of the sun, degrees",
-               [](SceneDescription& d, float r) { d.sun.angularRadius = r; }),
-          0.01, 20.0);
-    range(bind(cmd, "--clouds", v.clouds.layer.coverage,
-               "Cloud coverage, 0 (none) to 1 (overcast); the layer's other parameters are the scene file's `clouds`",
-               [](SceneDescription& d, float c) { d.clouds.layer.coverage = c; }),
-          0.0, 1.0);
-
-    // geometry
-    text_.geometry = "procedural";
-    withDefault(bind(cmd, "--geometry", text_.geometry,
-                     "procedural|triangles|plain for every kind, or KIND=MODE,... (kinds: walls, roofs, lamps, trees, buildings); "
-                     "plain: no facades",
-                     [](SceneDescription& d, const std::string& text) { d.geometry.modes = parseGeometryModes(text); }));
-    withDefault(bind(cmd, "--wall-tiles", v.geometry.wallTiles,
-                     "whole, or SLOTSxFLOORS: split each procedural wall into BVH tiles of at most that many cells",
-                     [](SceneDescription& d, const std::string& text) {
-                         if (!wallTileSizeOf(text))
-                             throw InputError("--wall-tiles: need 'whole' or SLOTSxFLOORS (e.g. 4x4), got '" + text + "'",
-                                              FailureKind::Usage);
-                         d.geometry.wallTiles = text;
-                     }));
-    if (CLI::Option* traffic = bind(cmd, "--traffic", v.geometry.traffic,
-                                    "The side traffic keeps (lanes, stop lines): auto (by the city's place), right or left",
-                                    [](SceneDescription& d, const std::string& s) { d.geometry.traffic = s; }))
-        traffic->check(CLI::IsMember(std::vector<std::string>(std::begin(kTrafficSides), std::end(kTrafficSides))))
-            ->capture_default_str();
-    if (wanted("--no-streets")) {
-        CLI::Option* flag = cmd.add_flag("--no-streets", noStreets_, "Buildings on the bare ground: no roads, sidewalks, ground cover, water, lamps or trees");
-        overrides_.emplace_back(flag, [](SceneDescription& d) { d.geometry.streets = false; });
-    }
-
-    // integrator
-    range(bind(cmd, "--spp", v.integrator.spp, "Samples per pixel",
-               [](SceneDescription& d, uint32_t spp) { d.integrator.spp = spp; }),
-          1u, kMaxSpp);
-    range(bind(cmd, "--max-depth", v.integrator.maxDepth, "Path vertices after the camera",
-               [](SceneDescription& d, uint32_t n) { d.integrator.maxDepth = n; }),
-          1u, 1000u);
-    range(bind(cmd, "--rr-depth", v.integrator.rrDepth, "Depth where Russian roulette starts",
-               [](SceneDescription& d, uint32_t n) { d.integrator.rrDepth = n; }),
-          1u, 1000u);
-    range(bind(cmd, "--rr-survival", v.integrator.rrSurvival, "Largest survival probability of Russian roulette",
-               [](SceneDescription& d, float p) { d.integrator.rrSurvival = p; }),
-          0.01, 1.0);
-    if (CLI::Option* sampler = bind(cmd, "--light-sampler", v.integrator.lightSampler, "How lights are picked: uniform, power, bvh (the light BVH) or colliders (the thesis's)",
-                                    [](SceneDescription& d, const std::string& s) { d.integrator.lightSampler = s; }))
-        sampler->check(CLI::IsMember(std::vector<std::string>(std::begin(kLightSamplers), std::end(kLightSamplers))))
-            ->capture_default_str();
-    if (CLI::Option* kind = bind(cmd, "--integrator", v.integrator.kind, "path (the path tracer), photon-buffers (indirect light from per-block photon buffers) or photon-map (from a hash-grid photon map, the reference)",
-                                 [](SceneDescription& d, const std::string& s) { d.integrator.kind = s; }))
-        kind->check(CLI::IsMember(std::vector<std::string>(std::begin(kIntegratorKinds), std::end(kIntegratorKinds))))
-            ->capture_default_str();
-    range(bind(cmd, "--photons", v.photons.perPass, "Photons per pass of the photon integrators (one pass per sample)",
-               [](SceneDescription& d, uint32_t n) { d.photons.perPass = n; }),
-          1u, 1u << 26);
-    range(bind(cmd, "--photon-radius", v.photons.radius, "Metres: the photon map's gather radius at the first pass",
-               [](SceneDescription& d, float r) { d.photons.radius = r; }),
-          1e-3, 1e3);
-
-    // film
-    withDefault(bind(cmd, "--out", v.film.output, "Image to write; the format follows the extension: .png (tone-mapped sRGB) or .exr (linear, with AOV layers)",
-                     [](SceneDescription& d, const std::string& out) { d.film.output = out; }));
-    range(bind(cmd, "--width", v.film.width, "Image width in pixels",
-               [](SceneDescription& d, uint32_t w) { d.film.width = w; }),
-          1u, kMaxImageSide);
-    range(bind(cmd, "--height", v.film.height, "Image height in pixels",
-               [](SceneDescription& d, uint32_t h) { d.film.height = h; }),
-          1u, kMaxImageSide);
-    range(bind(cmd, "--exposure", v.film.exposure, "Exposure in stops",
-               [](SceneDescription& d, float ev) { d.film.exposure = ev; }),
-          -20.0, 20.0);
-    if (wanted("--exr-float")) {
-        CLI::Option* flag = cmd.add_flag("--exr-float", v.film.exrFloat, "EXR colour, albedo and normal as 32-bit float (default half)");
-        overrides_.emplace_back(flag, [&v](SceneDescription& d) { d.film.exrFloat = v.film.exrFloat; });
-    }
-    if (wanted("--denoise")) {
-        CLI::Option* flag = cmd.add_flag("--denoise", v.film.denoise, "Denoise the HDR film, guided by its AOVs, before it is written");
-        overrides_.emplace_back(flag, [&v](SceneDescription& d) { d.film.denoise = v.film.denoise; });
-    }
-    addTerrainOptions(cmd);
-
-    // a whole planet instead of the city (docs/planets.md)
-    if (CLI::Option* planet = bind(cmd, "--planet", text_.planet,
-                                   "[RADIUS_KM]: render a whole planet instead of the city (default Earth-like, 6360 km, "
-                                   "or the scene file's planet)",
-                                   [](SceneDescription& d, const std::string& text) {
-                                       if (!d.planet) d.planet = PlanetDescription{};
-                                       if (text.empty()) return;
-                                       const double r = parseNumberList("--planet", text, ',', 1, 1)[0];
-                                       if (!(r >= 10.0 && r <= 1e6))
-                                           throw InputError("--planet: radius must be in [10, 1e6] km, got '" + text + "'",
-                                                            FailureKind::Usage);
-                                       d.planet->radiusKm = r;
-                                   }))
-        planet->expected(0, 1);
-    bind(cmd, "--camera-orbit", text_.cameraOrbit,
-         "ALT_KM,LAT,LON[,HEADING,PITCH]: the camera above a planet (--planet): km above the ground under it, degrees "
-         "(heading clockwise from north, pitch above the horizon; default 0,-90: straight down)",
-         [](SceneDescription& d, const std::string& text) {
-             if (!d.planet) throw InputError("--camera-orbit: places the camera above a planet and needs --planet", FailureKind::Usage);
-             const std::vector<double> c = parseNumberList("--camera-orbit", text, ',', 3, 5);
-             if (!(c[0] >= 0.0 && c[0] <= 1e6 && c[1] >= -90.0 && c[1] <= 90.0 && c[2] >= -360.0 && c[2] <= 360.0))
-                 throw InputError("--camera-orbit: need 0 <= ALT_KM <= 1e6, LAT in [-90, 90], LON in [-360, 360], got '" +
-                                      text + "'", FailureKind::Usage);
-             PlanetCameraDescription& camera = d.planet->camera;
-             camera = {c[0], c[1], c[2], c.size() > 3 ? float(c[3]) : 0.0f, c.size() > 4 ? float(c[4]) : -90.0f};
-             if (!(camera.pitch >= -90.0f && camera.pitch <= 90.0f))
-                 throw InputError("--camera-orbit: PITCH must be in [-90, 90] degrees", FailureKind::Usage);
-         });
+    Binder binder(*this, cmd);
+    visitSceneFields(values_, binder);
+    CLI::Option* geo = cmd.get_option_no_throw("--camera-geo");
+    if (CLI::Option* camera = cmd.get_option_no_throw("--camera"); geo && camera) geo->excludes(camera);
 }
 
 SceneDescription SceneCommandLine::resolve() const {
-    SceneDescription d = sceneFile_.empty() ? defaults_ : readSceneFile(sceneFile_);
-    for (const auto& [option, apply] : overrides_)
-        if (option->count()) apply(d);
+    SceneDescription d = sceneFile_.empty() ? defaults_ : readSceneFile(sceneFile_, defaults_);
+    for (const auto& [order, option] : compounds_)
+        if (option.first->count()) compoundOptions()[order].apply(d, *option.second);
+    Applier applier(*this);
+    visitSceneFields(d, applier);
     // The file alone was checked as it was read: what fails here, the command line's options made.
     if (std::optional<SceneProblem> problem = firstSceneProblem(d))
         throw InputError(problem->option + " (" + problem->key + "): " + problem->message, FailureKind::Usage);

@@ -1,16 +1,20 @@
 // The command-line options that set parts of the scene description, and --scene / --save-scene:
 // a command's scene is its scene file (or its defaults) with the options given on the command line
-// applied over it.
+// applied over it. The options are made from the scene's fields (description/scene_fields.h): each
+// key's Field names its option and help, its range is the option's check.
 #pragma once
 
 #include "description/scene_description.h"
 
 #include <CLI/CLI.hpp>
 
+#include <deque>
 #include <functional>
 #include <initializer_list>
+#include <map>
 #include <string>
 #include <string_view>
+#include <typeinfo>
 #include <utility>
 #include <vector>
 
@@ -18,43 +22,51 @@ namespace urbis {
 
 class SceneCommandLine {
 public:
-    /// `defaults`: the command's scene without a scene file (bench's differs from render's).
+    /// `defaults`: the command's scene where neither a scene file nor an option sets a key (bench's
+    /// differ from render's).
     explicit SceneCommandLine(SceneDescription defaults = {});
     SceneCommandLine(const SceneCommandLine&) = delete;             // the options point into it
     SceneCommandLine& operator=(const SceneCommandLine&) = delete;
 
-    /// Registers --scene, --save-scene and the scene's options on `cmd`; with `only`, just the
-    /// options named there (bench takes a part of render's).
+    /// Registers --scene, --save-scene and an option for every key of the scene (grouped by the
+    /// scene file's sections); with `only`, just the options named there (bench takes a part of
+    /// render's).
     void addOptions(CLI::App& cmd, std::initializer_list<std::string_view> only = {});
 
-    /// The scene file's description (readSceneFile), or the defaults without --scene, with every
-    /// option given on the command line applied over it. Throws InputError: bad input for the
-    /// file, usage for an option's value or a combination that does not hold (firstSceneProblem).
+    /// The scene file's description (readSceneFile over the defaults), or the defaults without
+    /// --scene, with every option given on the command line applied over it. Throws InputError: bad
+    /// input for the file, usage for an option's value or a combination that does not hold
+    /// (firstSceneProblem).
     SceneDescription resolve() const;
 
     /// --save-scene: where to write the resolved description; empty: nowhere.
     const std::string& saveScenePath() const { return saveScene_; }
 
 private:
-    /// Registers `name` bound to `storage`; when given, `apply(description, storage)` sets its part.
-    /// Whether `addOptions` registers option `name` (all of them, or those its `only` list names).
-    bool wanted(std::string_view name) const;
-    template <typename T, typename Apply>
-    CLI::Option* bind(CLI::App& cmd, const std::string& name, T& storage, const std::string& help, Apply apply);
-    /// Registers --terrain, --dem and --terrain-march (app/terrain_options.cpp).
-    void addTerrainOptions(CLI::App& cmd);
+    class Binder;    // registers the options, walking visitSceneFields
+    class Applier;   // applies the given ones to a description, walking it likewise
+
+    /// An option that sets a key of its own: where its value is kept and how it sets a field of the
+    /// key's type (`type`; the keys that share an option share its type).
+    struct KeyOption {
+        const CLI::Option* option;
+        const std::type_info* type;
+        std::function<void(void* field)> assign;
+    };
+
+    bool wanted(std::string_view flag) const;
 
     SceneDescription defaults_;
     SceneDescription values_;   ///< storage of the options that take a field's own type
-    struct CompoundValues {     ///< storage of the options that take a text ("40,150", "20:100", ...)
-        std::string bbox, heightRange, camera, cameraGeo, time, location, sun, geometry;
-        std::string planet, cameraOrbit;
-    } text_;
+    std::deque<std::string> texts_;                ///< storage of the options that take a text
+    std::deque<std::vector<std::string>> lists_;   ///< of the options that may be given again
+    std::deque<bool> switches_;                    ///< of the boolean options
     std::string sceneFile_, saveScene_;
-    bool noStreets_ = false;   ///< --no-streets
-    bool noAerialPerspective_ = false;  ///< --no-aerial-perspective
     std::vector<std::string_view> only_;
-    std::vector<std::pair<const CLI::Option*, std::function<void(SceneDescription&)>>> overrides_;
+    std::map<std::string, KeyOption, std::less<>> keyOptions_;
+    /// The compound options registered (app/compound_options.h) by their order of application,
+    /// with their values' storage.
+    std::map<size_t, std::pair<const CLI::Option*, const std::string*>> compounds_;
 };
 
 } // namespace urbis

@@ -32,7 +32,8 @@ float dragSpeed(T value, T lo, T hi) {
     return float(std::max(std::abs(double(value)) * 0.01, std::is_integral_v<T> ? 0.2 : 0.01));
 }
 
-/// Makes ImGui widgets of visitSceneFields' fields (scene_fields.h lists the calls), noting edits.
+/// Makes ImGui widgets of visitSceneFields' fields (scene_fields.h lists the calls), each labelled by
+/// its key with its help as the tooltip, noting edits.
 class PanelVisitor {
 public:
     PanelEdit edit;
@@ -46,100 +47,115 @@ public:
     }
 
     template <typename T, typename F>
-    void optionalObject(const char* key, std::optional<T>& value, F&& fields) {
-        optional(key, value, [&](T& v) { object(key, [&] { fields(v); }); });
+    void optionalObject(const Field& f, std::optional<T>& value, F&& fields) {
+        optional(f, value, [&](T& v) { object(f.key, [&] { fields(v); }); });
     }
 
     template <typename T>
-    void number(const char* key, T& value, std::type_identity_t<T> lo, std::type_identity_t<T> hi) {
-        dragged(ImGui::DragScalar(key, dataTypeOf<T>(), &value, dragSpeed(value, lo, hi), &lo, &hi, nullptr,
-                                  ImGuiSliderFlags_AlwaysClamp));
+    void number(const Field& f, T& value, std::type_identity_t<T> lo, std::type_identity_t<T> hi) {
+        dragged(f, ImGui::DragScalar(f.key, dataTypeOf<T>(), &value, dragSpeed(value, lo, hi), &lo, &hi, nullptr,
+                                     ImGuiSliderFlags_AlwaysClamp));
     }
 
-    void vec3(const char* key, Vec3f& value, float, float hi) {
+    void vec3(const Field& f, Vec3f& value, float, float hi) {
         const ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float | (hi > 1.0f ? ImGuiColorEditFlags_HDR : 0);
-        dragged(ImGui::ColorEdit3(key, &value.x, flags));
+        dragged(f, ImGui::ColorEdit3(f.key, &value.x, flags));
     }
 
-    void optionalVec3(const char* key, std::optional<Vec3f>& value, float lo, float hi) {
-        optional(key, value, [&](Vec3f& v) { dragged(ImGui::DragFloat3(key, &v.x, dragSpeed(v.x, lo, hi), lo, hi)); });
+    void optionalVec3(const Field& f, std::optional<Vec3f>& value, float lo, float hi) {
+        optional(f, value, [&](Vec3f& v) { dragged(f, ImGui::DragFloat3(f.key, &v.x, dragSpeed(v.x, lo, hi), lo, hi)); });
     }
 
     template <typename T, size_t N>
-    void optionalArray(const char* key, std::optional<std::array<T, N>>& value, T lo, T hi) {
-        optional(key, value, [&](std::array<T, N>& a) {
-            dragged(ImGui::DragScalarN(key, dataTypeOf<T>(), a.data(), int(N), dragSpeed(a[0], lo, hi), &lo, &hi));
+    void optionalArray(const Field& f, std::optional<std::array<T, N>>& value, T lo, T hi) {
+        optional(f, value, [&](std::array<T, N>& a) {
+            dragged(f, ImGui::DragScalarN(f.key, dataTypeOf<T>(), a.data(), int(N), dragSpeed(a[0], lo, hi), &lo, &hi));
         });
     }
 
-    void text(const char* key, std::string& value) {
-        discrete(ImGui::InputText(key, &value, ImGuiInputTextFlags_EnterReturnsTrue));
+    void text(const Field& f, std::string& value) {
+        discrete(f, ImGui::InputText(f.key, &value, ImGuiInputTextFlags_EnterReturnsTrue));
     }
 
-    void boolean(const char* key, bool& value) { discrete(ImGui::Checkbox(key, &value)); }
+    void boolean(const Field& f, bool& value) { discrete(f, ImGui::Checkbox(f.key, &value)); }
 
-    void choice(const char* key, std::string& value, std::span<const char* const> names) {
-        if (!ImGui::BeginCombo(key, value.c_str())) return;
-        for (const char* name : names)
-            if (discrete(ImGui::Selectable(name, value == name))) value = name;
+    template <typename Table>
+    void choice(const Field& f, std::string& value, const Table& table) {
+        const bool open = ImGui::BeginCombo(f.key, value.c_str());
+        tooltip(f);
+        if (!open) return;
+        for (const auto& entry : table)
+            if (discrete(f, ImGui::Selectable(choiceName(entry), value == choiceName(entry)))) value = choiceName(entry);
         ImGui::EndCombo();
     }
 
-    void choiceList(const char* key, std::vector<std::string>& value, std::span<const char* const> names) {
-        if (!ImGui::TreeNode(key)) return;
+    template <typename Table>
+    void choiceList(const Field& f, std::vector<std::string>& value, const Table& table) {
+        const bool open = ImGui::TreeNode(f.key);
+        tooltip(f);
+        if (!open) return;
         std::vector<std::string> chosen;
-        for (const char* name : names) {
+        for (const auto& entry : table) {
+            const char* name = choiceName(entry);
             bool on = std::find(value.begin(), value.end(), name) != value.end();
-            discrete(ImGui::Checkbox(name, &on));
+            discrete(f, ImGui::Checkbox(name, &on));
             if (on) chosen.emplace_back(name);
         }
         value = std::move(chosen);
         ImGui::TreePop();
     }
 
-    template <typename E, typename Names>
-    void enumeration(const char* key, E& value, const Names& names) {
-        const char* shown = "";
-        for (const auto& [name, e] : names)
-            if (e == value) shown = name;
-        if (!ImGui::BeginCombo(key, shown)) return;
-        for (const auto& [name, e] : names)
-            if (discrete(ImGui::Selectable(name, e == value))) value = e;
+    template <typename E, size_t N>
+    void enumeration(const Field& f, E& value, const Choice<E> (&table)[N]) {
+        const bool open = ImGui::BeginCombo(f.key, nameOfChoice(table, value));
+        tooltip(f);
+        if (!open) return;
+        for (const Choice<E>& entry : table)
+            if (discrete(f, ImGui::Selectable(entry.name, entry.value == value))) value = entry.value;
         ImGui::EndCombo();
     }
 
-    void colourMap(const char* key, std::map<std::string, Vec3f>& value) {
-        if (!ImGui::TreeNode(key)) return;
+    void colourMap(const Field& f, std::map<std::string, Vec3f>& value) {
+        const bool open = ImGui::TreeNode(f.key);
+        tooltip(f);
+        if (!open) return;
         if (value.empty()) ImGui::TextDisabled("(none: the palettes' colours)");
-        for (auto& [type, colour] : value) vec3(type.c_str(), colour, 0.0f, 1.0f);
+        for (auto& [type, colour] : value) dragged(f, ImGui::ColorEdit3(type.c_str(), &colour.x, ImGuiColorEditFlags_Float));
         ImGui::TreePop();
     }
 
     /// Keyframes are edited in the scene file (docs/animation.md); the panel says how many there are.
-    void animation(const char* key, const AnimationDescription& value) {
-        ImGui::TextDisabled("%s: %zu camera and %zu time keyframes", key, value.camera.size(), value.time.size());
+    template <typename Keyframe>
+    void keyframes(const Field& f, const std::vector<Keyframe>& value) {
+        ImGui::TextDisabled("%s: %zu keyframes", f.key, value.size());
+        tooltip(f);
     }
 
 private:
-    bool discrete(bool edited) {
+    static void tooltip(const Field& f) {
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", f.help, f.flag ? f.flag : "scene file only");
+    }
+    bool discrete(const Field& f, bool edited) {
+        tooltip(f);
         edit.changed |= edited;
         edit.committed |= edited;
         return edited;
     }
-    void dragged(bool edited) {
+    void dragged(const Field& f, bool edited) {
+        tooltip(f);
         edit.changed |= edited;
         edit.committed |= ImGui::IsItemDeactivatedAfterEdit();
     }
     template <typename T, typename F>
-    void optional(const char* key, std::optional<T>& value, F&& widget) {
+    void optional(const Field& f, std::optional<T>& value, F&& widget) {
         bool set = value.has_value();
-        if (discrete(ImGui::Checkbox(("##set " + std::string(key)).c_str(), &set))) {
+        if (discrete(f, ImGui::Checkbox(("##set " + std::string(f.key)).c_str(), &set))) {
             if (set) value = T{};
             else value.reset();
         }
         ImGui::SameLine();
         if (value) widget(*value);
-        else ImGui::TextDisabled("%s (unset)", key);
+        else ImGui::TextDisabled("%s (unset)", f.key);
     }
 };
 

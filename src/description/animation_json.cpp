@@ -2,6 +2,9 @@
 
 #include "astro/civil_time.h"
 #include "base/input_error.h"
+#include "description/animation_fields.h"
+#include "description/field_reader.h"
+#include "description/field_writer.h"
 #include "description/scene_json.h"
 
 #include <algorithm>
@@ -86,19 +89,16 @@ private:
     std::vector<std::string> known_;
 };
 
-constexpr double kMaxSeconds = 1e6;
-
-/// The array of keyframes under `key`, each read by `read(object, index)`, their times increasing.
+/// The keyframes of the array `node` (the value of `path` in `file`), each read by `read(object,
+/// keyframe)`, their times increasing.
 template <typename Keyframe, typename Read>
-std::vector<Keyframe> keyframes(ObjectReader& section, const char* key, const std::string& file, const std::string& path, Read read) {
+std::vector<Keyframe> keyframes(const json& node, const std::string& file, const std::string& path, Read read) {
+    if (!node.is_array()) throw InputError(file + ": " + path + ": expected an array of keyframes");
     std::vector<Keyframe> out;
-    const json* node = section.find(key);
-    if (!node) return out;
-    if (!node->is_array()) section.fail(key, "expected an array of keyframes");
-    for (size_t i = 0; i < node->size(); ++i) {
-        ObjectReader k((*node)[i], file, path + "." + key + "[" + std::to_string(i) + "]");
+    for (size_t i = 0; i < node.size(); ++i) {
+        ObjectReader k(node[i], file, path + "[" + std::to_string(i) + "]");
         Keyframe frame;
-        frame.time = k.required("time", 0.0, kMaxSeconds, "seconds from the animation's start");
+        frame.time = k.required("time", 0.0, kMaxAnimationSeconds, "seconds from the animation's start");
         read(k, frame);
         k.finish();
         if (!out.empty() && !(frame.time > out.back().time)) {
@@ -147,25 +147,23 @@ json pointJson(Vec3f p) { return {floatJson(p.x), floatJson(p.y), floatJson(p.z)
 
 } // namespace
 
-AnimationDescription animationFromJson(const json& node, const std::string& file, const std::string& path) {
-    AnimationDescription a;
-    ObjectReader section(node, file, path);
-    if (const auto fps = section.number("fps", 0.01, 1000.0)) a.fps = float(*fps);
-    if (const auto duration = section.number("duration", 0.0, kMaxSeconds)) a.duration = *duration;
-    a.camera = keyframes<CameraKeyframe>(section, "camera", file, path, readCameraKeyframe);
-    a.time = keyframes<TimeKeyframe>(section, "time", file, path, readTimeKeyframe);
-    for (size_t i = 1; i < a.time.size(); ++i)
-        if (a.time[i].exposure.has_value() != a.time[0].exposure.has_value())
-            ObjectReader(node["time"][i], file, path + ".time[" + std::to_string(i) + "]")
-                .fail("exposure", "on every time keyframe or on none (animation.time[0] " +
-                                      std::string(a.time[0].exposure ? "has one)" : "has none)"));
-    section.finish();
-    return a;
+std::vector<CameraKeyframe> cameraKeyframesFromJson(const json& node, const std::string& file, const std::string& path) {
+    return keyframes<CameraKeyframe>(node, file, path, readCameraKeyframe);
 }
 
-json animationToJson(const AnimationDescription& a) {
-    json out = {{"fps", floatJson(a.fps)}, {"duration", a.duration}, {"camera", json::array()}, {"time", json::array()}};
-    for (const CameraKeyframe& k : a.camera) {
+std::vector<TimeKeyframe> timeKeyframesFromJson(const json& node, const std::string& file, const std::string& path) {
+    std::vector<TimeKeyframe> out = keyframes<TimeKeyframe>(node, file, path, readTimeKeyframe);
+    for (size_t i = 1; i < out.size(); ++i)
+        if (out[i].exposure.has_value() != out[0].exposure.has_value())
+            ObjectReader(node[i], file, path + "[" + std::to_string(i) + "]")
+                .fail("exposure", "on every time keyframe or on none (" + path + "[0] " +
+                                      std::string(out[0].exposure ? "has one)" : "has none)"));
+    return out;
+}
+
+json keyframesToJson(const std::vector<CameraKeyframe>& keyframes) {
+    json out = json::array();
+    for (const CameraKeyframe& k : keyframes) {
         json frame = {{"time", k.time}};
         if (k.position) frame["position"] = pointJson(*k.position);
         if (k.geo) frame["geo"] = *k.geo;
@@ -174,14 +172,33 @@ json animationToJson(const AnimationDescription& a) {
         if (k.pitch) frame["pitch"] = floatJson(*k.pitch);
         if (k.fov) frame["fov"] = floatJson(*k.fov);
         frame["ease"] = k.ease;
-        out["camera"].push_back(frame);
-    }
-    for (const TimeKeyframe& k : a.time) {
-        json frame = {{"time", k.time}, {"date", k.date}};
-        if (k.exposure) frame["exposure"] = floatJson(*k.exposure);
-        out["time"].push_back(frame);
+        out.push_back(frame);
     }
     return out;
+}
+
+json keyframesToJson(const std::vector<TimeKeyframe>& keyframes) {
+    json out = json::array();
+    for (const TimeKeyframe& k : keyframes) {
+        json frame = {{"time", k.time}, {"date", k.date}};
+        if (k.exposure) frame["exposure"] = floatJson(*k.exposure);
+        out.push_back(frame);
+    }
+    return out;
+}
+
+AnimationDescription animationFromJson(const json& node, const std::string& file, const std::string& path) {
+    AnimationDescription a;
+    FieldReader reader(node, file, path);
+    visitAnimationFields(a, reader);
+    reader.finish();
+    return a;
+}
+
+json animationToJson(const AnimationDescription& animation) {
+    FieldWriter writer;
+    visitAnimationFields(animation, writer);
+    return writer.root;
 }
 
 } // namespace urbis

@@ -7,10 +7,11 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace urbis {
 
-/// Reads `node` (the value of `path`, "animation", in `file`). Throws InputError "FILE: PATH.KEY:
+/// Reads `node` (the value of `path`, "animation", in `file`), walking visitAnimationFields. Throws InputError "FILE: PATH.KEY:
 /// problem" on an unknown key, a value of the wrong type or out of range, a keyframe without a time
 /// or without a position, times that do not increase, a position given both ways, a look given both
 /// ways or a heading without a pitch, a date that is no ISO 8601 time with an offset.
@@ -18,5 +19,19 @@ AnimationDescription animationFromJson(const nlohmann::ordered_json& node, const
 
 /// The section as a scene file holds it: fps, duration, and the keyframes with the keys they give.
 nlohmann::ordered_json animationToJson(const AnimationDescription& animation);
+
+/// The camera keyframes of the array `node` (the value of `path`, "animation.camera", in `file`),
+/// checked as animationFromJson says.
+std::vector<CameraKeyframe> cameraKeyframesFromJson(const nlohmann::ordered_json& node, const std::string& file,
+                                                    const std::string& path);
+
+/// The time keyframes of the array `node` (the value of `path`, "animation.time", in `file`), checked
+/// as animationFromJson says.
+std::vector<TimeKeyframe> timeKeyframesFromJson(const nlohmann::ordered_json& node, const std::string& file,
+                                                const std::string& path);
+
+/// The keyframes as a scene file holds them, each with the keys it gives.
+nlohmann::ordered_json keyframesToJson(const std::vector<CameraKeyframe>& keyframes);
+nlohmann::ordered_json keyframesToJson(const std::vector<TimeKeyframe>& keyframes);
 
 } // namespace urbis

@@ -5,11 +5,13 @@
 #pragma once
 
 #include "citygen/city_mesher.h"
+#include "description/choice.h"
 #include "description/animation_description.h"
 #include "description/planet_description.h"
 #include "scene/geometry_modes.h"
 #include "film/film_layers.h"
 #include "scene/cloud_layer.h"
+#include "scene/integrator_choice.h"
 #include "scene/sky.h"
 #include "math/vec.h"
 #include "terrain/terrain_params.h"
@@ -185,12 +187,21 @@ struct SceneDescription {
 };
 
 /// The choices of IntegratorDescription::kind and ::lightSampler.
-inline constexpr const char* kIntegratorKinds[] = {"path", "photon-buffers", "photon-map"};  // in IntegratorKind order
-inline constexpr const char* kLightSamplers[] = {"uniform", "power", "bvh", "colliders"};  // in LightSamplerKind order
+inline constexpr Choice<IntegratorKind> kIntegratorKinds[] = {
+    {"path", IntegratorKind::Path}, {"photon-buffers", IntegratorKind::PhotonBuffers}, {"photon-map", IntegratorKind::PhotonMap}};
+inline constexpr Choice<LightSamplerKind> kLightSamplers[] = {{"uniform", LightSamplerKind::Uniform},
+                                                              {"power", LightSamplerKind::Power},
+                                                              {"bvh", LightSamplerKind::Bvh},
+                                                              {"colliders", LightSamplerKind::Colliders}};
+/// The choices of GeometryDescription::traffic: "auto" takes the side of the city's place.
 inline constexpr const char* kTrafficSides[] = {"auto", "right", "left"};
 /// The choices of SkyDescription::model.
-inline constexpr const char* kSkyModels[] = {"atmosphere", "analytic"};
-/// The choices of CloudsDescription::type, in CloudType order.
-inline constexpr const char* kCloudTypes[] = {"cumulus", "stratus", "uniform"};
+inline constexpr Choice<SkyModel> kSkyModels[] = {{"atmosphere", SkyModel::Atmosphere}, {"analytic", SkyModel::Analytic}};
+/// The choices of CloudsDescription::type.
+inline constexpr Choice<CloudType> kCloudTypes[] = {
+    {"cumulus", CloudType::Cumulus}, {"stratus", CloudType::Stratus}, {"uniform", CloudType::Uniform}};
+/// The representations of GeometryModes' kinds.
+inline constexpr Choice<Representation> kRepresentations[] = {
+    {"procedural", Representation::Procedural}, {"triangles", Representation::Triangles}, {"plain", Representation::Plain}};
 
 } // namespace urbis

@@ -10,11 +10,12 @@
 
 namespace urbis {
 
-/// The description `json` holds, over the defaults for the keys it leaves out. `file` names the
-/// source in messages. Throws a bad-input InputError of one line, "FILE: KEY.PATH: problem", on an
+/// The description `json` holds, over `defaults` for the keys it leaves out (a command's own:
+/// bench's differ from render's). `file` names the source in messages. Throws a bad-input InputError of one line, "FILE: KEY.PATH: problem", on an
 /// unknown key, a wrong type, a value out of range or fields that contradict each other (see
 /// checkSceneDescription). Relative paths are kept as written.
-SceneDescription sceneFromJson(const nlohmann::ordered_json& json, const std::string& file);
+SceneDescription sceneFromJson(const nlohmann::ordered_json& json, const std::string& file,
+                               const SceneDescription& defaults = {});
 
 /// Every key of `description` with its value, in the order of docs/scene_files.md; null for the
 /// optional fields it leaves unset.
@@ -29,8 +30,8 @@ std::string sceneFileText(const SceneDescription& description);
 
 /// Reads the scene file at `path` (sceneFromJson), naming the file on a missing or unreadable file
 /// and the line and column of malformed JSON. A relative source.osm is taken relative to the
-/// file's folder.
-SceneDescription readSceneFile(const std::string& path);
+/// file's folder. The keys the file leaves out keep `defaults`.
+SceneDescription readSceneFile(const std::string& path, const SceneDescription& defaults = {});
 
 /// The JSON of the file at `path`; an InputError names the file (and `what` it should be: "scene
 /// file") when it is missing or unreadable, and the line and column of malformed JSON.

@@ -8,9 +8,7 @@
 #include "scene/scene.h"
 #include "scene/terrain_field.h"
 
-#include <algorithm>
 #include <cmath>
-#include <iterator>
 
 namespace urbis {
 
@@ -62,7 +60,7 @@ Sky skyOf(const SkyDescription& d) {
     sky.horizon = d.horizon;
     sky.ground = d.ground;
     sky.exponent = d.exponent;
-    sky.model = d.model == "analytic" ? SkyModel::Analytic : SkyModel::Atmosphere;
+    sky.model = choiceNamed(kSkyModels, d.model).value_or(SkyModel::Atmosphere);
     Atmosphere& a = sky.atmosphere;
     a.mieScattering *= d.aerosols;
     a.mieAbsorption *= d.aerosols;
@@ -83,11 +81,9 @@ RenderSettings renderSettingsOf(const IntegratorDescription& integrator, const F
     settings.maxDepth = integrator.maxDepth;
     settings.rrDepth = integrator.rrDepth;
     settings.rrSurvival = integrator.rrSurvival;
-    for (uint32_t i = 0; i < std::size(kLightSamplers); ++i)
-        if (integrator.lightSampler == kLightSamplers[i]) settings.lightSampler = LightSamplerKind(i);
+    settings.lightSampler = choiceNamed(kLightSamplers, integrator.lightSampler).value_or(settings.lightSampler);
     settings.lightSamples = integrator.lightSamples;
-    for (uint32_t i = 0; i < std::size(kIntegratorKinds); ++i)
-        if (integrator.kind == kIntegratorKinds[i]) settings.integrator = IntegratorKind(i);
+    settings.integrator = choiceNamed(kIntegratorKinds, integrator.kind).value_or(settings.integrator);
     return settings;
 }
 
@@ -139,7 +135,7 @@ Camera cameraOf(const CameraDescription& camera, float aspect, const GeoOrigin& 
 
 CloudLayer cloudLayerOf(const CloudsDescription& clouds) {
     CloudLayer layer = clouds.layer;
-    layer.type = CloudType(std::find(std::begin(kCloudTypes), std::end(kCloudTypes), clouds.type) - std::begin(kCloudTypes));
+    layer.type = choiceNamed(kCloudTypes, clouds.type).value_or(CloudType::Cumulus);
     return layer;
 }
 

@@ -1,11 +1,46 @@
 #include "viewer/scene_edit.h"
 
+#include "description/scene_field_list.h"
 #include "description/scene_json.h"
 
 #include <algorithm>
-#include <string_view>
+#include <map>
 
 namespace urbis {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+/// How far a change at key path `path` reaches: its field's change, or that of the nearest field
+/// around it (a colour map's entry, a keyframe's key). A path that no field names rebuilds.
+SceneChange reachOf(std::string path) {
+    static const std::map<std::string, SceneChange> reach = [] {
+        std::map<std::string, SceneChange> m;
+        for (const FieldAtPath& f : sceneFieldList()) m[f.path] = f.field.change;
+        return m;
+    }();
+    for (;;) {
+        if (const auto it = reach.find(path); it != reach.end()) return it->second;
+        const size_t dot = path.rfind('.');
+        if (dot == std::string::npos) return SceneChange::Rebuild;
+        path.resize(dot);
+    }
+}
+
+/// Raises `change` to the reach of every value that differs between `a` and `b` (at `path`).
+void compare(const json& a, const json& b, const std::string& path, SceneChange& change) {
+    if (a.is_object() && b.is_object()) {
+        const auto at = [&](const std::string& key) { return path.empty() ? key : path + "." + key; };
+        for (const auto& [key, x] : a.items()) compare(x, b.contains(key) ? b[key] : json(), at(key), change);
+        for (const auto& [key, y] : b.items())
+            if (!a.contains(key)) compare(json(), y, at(key), change);
+        return;
+    }
+    if (a != b) change = std::max(change, reachOf(path));
+}
+
+} // namespace
 
 SceneDescription patchedScene(const SceneDescription& d, const nlohmann::ordered_json& patch, const std::string& where) {
     nlohmann::ordered_json json = sceneToJson(d);
@@ -14,27 +49,10 @@ SceneDescription patchedScene(const SceneDescription& d, const nlohmann::ordered
 }
 
 SceneChange sceneChangeOf(const SceneDescription& before, const SceneDescription& after) {
-    const nlohmann::ordered_json a = sceneToJson(before), b = sceneToJson(after);
-    // Film keys that only the written files read: the viewer's image does not change with them.
-    constexpr std::string_view kFileKeys[] = {"output", "layers", "exr_float"};
     SceneChange change = SceneChange::None;
-    const auto raise = [&](SceneChange c) { change = std::max(change, c); };
-    for (const auto& [section, value] : a.items()) {
-        if (b.contains(section) && b[section] == value) continue;
-        if (section == "camera" || section == "integrator") {
-            raise(SceneChange::Restart);
-        } else if (section == "film") {
-            for (const auto& [key, x] : value.items()) {
-                if (b[section].value(key, nlohmann::ordered_json()) == x) continue;
-                if (key == "width" || key == "height") raise(SceneChange::Resize);
-                else if (key == "exposure" || key == "denoise") raise(SceneChange::Display);
-                else if (std::find(std::begin(kFileKeys), std::end(kFileKeys), key) == std::end(kFileKeys)) raise(SceneChange::Restart);
-            }
-        } else {
-            raise(SceneChange::Rebuild);
-        }
-    }
-    return change;
+    compare(sceneToJson(before), sceneToJson(after), "", change);
+    // The viewer relights by building the scene again (view_session.cpp has no step of its own for it).
+    return change == SceneChange::Relight ? SceneChange::Rebuild : change;
 }
 
 } // namespace urbis

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "description/scene_description.h"
+#include "description/scene_field.h"
 
 #include <nlohmann/json.hpp>
 
@@ -15,17 +16,8 @@ namespace urbis {
 /// (sceneFromJson): every problem is an InputError naming `where` and the key.
 SceneDescription patchedScene(const SceneDescription& d, const nlohmann::ordered_json& patch, const std::string& where);
 
-/// What a change of the description asks of the viewer, least first.
-enum class SceneChange {
-    None,      ///< nothing that shows
-    Display,   ///< the exposure or the denoiser: the same samples shown otherwise
-    Restart,   ///< the camera or the integrator: the same scene, the image starts over
-    Resize,    ///< the film's size: a new film
-    Rebuild,   ///< anything else (the city, its geometry, materials, the sky and the sun): the scene is built again
-};
-
-/// How far the change from `before` to `after` reaches. Sections no rule names (keys other branches
-/// add) rebuild the scene: always right, if slower than need be.
+/// How far the change from `before` to `after` reaches: the furthest of the changed keys' own reach
+/// (Field::change, description/scene_fields.h), Relight taken as Rebuild.
 SceneChange sceneChangeOf(const SceneDescription& before, const SceneDescription& after);
 
 } // namespace urbis
