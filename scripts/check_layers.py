@@ -26,8 +26,9 @@ import sys
 LAYERS = {
     "urbis.h": 0,       # URBIS_HD and the exact arithmetic helpers: the only test of __CUDACC__/__CUDA_ARCH__
     "math": 0,          # vectors, frames, bounds, rng, sampling with its pdf (host+device)
-    "base": 1,          # what every layer shares on the host: the error type InputError and FailureKind
-    "io": 2,            # files written to a temporary and renamed
+    "base": 1,          # what every layer shares on the host: the error type InputError and FailureKind,
+                        # name/value tables of choices, the memory a step requires, the process's own memory
+    "io": 2,            # files written to a temporary and renamed; output paths checked before any work
     "astro": 2,         # civil time, the sun's and the moon's positions, sidereal time (host only)
     "film": 3,          # images, accumulation, AOVs, tone mapping, PNG and EXR files
     "accel": 4,         # BVH nodes, the build and the traversal; knows math only
@@ -36,7 +37,7 @@ LAYERS = {
                         # Scene with its build; never intersectors or light sampling
     "geometry": 6,      # one intersector per primitive kind, the leaf dispatch over the kinds, traceScene
     "media": 6,         # participating media: the atmosphere's tables and look-ups, aerial perspective
-    "lights": 7,        # light sampling over the light records: light interface, light sampler, MIS
+    "lights": 7,        # one header per light kind and the fold over them, the light sampler, MIS, scene bounds
     "integrators": 8,   # the integrator interface, the path tracer, the AOV pass
     "model": 9,         # the city model: buildings, parts, polygons and their GEOS wrapper, the reasons buildings were dropped
     "planet": 9,        # whole planets: the record around a camera (double on the host), their scene
@@ -51,11 +52,13 @@ LAYERS = {
     "cpu": 14,          # the CPU backend (TBB)
     "gpu": 14,          # the CUDA backend; shares nothing with cpu/ but what lies below both
     "cluster": 14,      # MPI: the job's ranks, the tile queue of one frame, frames spread over ranks; a process's GPUs
-    "viewer": 14,       # the viewer's camera, input handling, scene edits and scripts, apart from any window
+    "prepare": 14,      # description -> scene: the city loaded and meshed or the planet built, the camera
+                        # chosen and checked, the clouds, the lights and the atmosphere
     "export": 14,       # the triangle twin as glTF and OBJ files (tinygltf), whole or in tiles
     "animation": 14,    # camera paths and time-of-day keyframes: the scene description of any instant
     "render": 15,       # the Renderer every front-end drives: an integrator's passes and state over the devices
-    "app": 16,          # the urbis command
+    "viewer": 16,       # the viewer: its session over a Renderer, camera, input, edits, scripts, panel and window
+    "app": 17,          # the urbis commands
 }
 
 # The portability header sits under everything: any folder may include it, math/ of its own rank too.

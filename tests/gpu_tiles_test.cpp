@@ -12,7 +12,7 @@
 #include "cluster/tile_grid.h"
 #include "cluster/tile_queue.h"
 #include "cluster/tile_workers.h"
-#include "description/scene_lighting.h"
+#include "prepare/scene_lighting.h"
 #include "lights/light_build.h"
 #include "media/atmosphere_build.h"
 #include "osm/osm_import.h"

@@ -2,7 +2,7 @@
 
 #include "app/memory_json.h"
 #include "app/memory_limit.h"
-#include "app/output_paths.h"
+#include "io/output_paths.h"
 #include "app/terrain_accuracy.h"
 #include "description/scene_json.h"
 #include "description/scene_parts.h"

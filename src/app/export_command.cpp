@@ -1,8 +1,8 @@
 #include "app/export_command.h"
 
 #include "app/memory_limit.h"
-#include "app/output_paths.h"
-#include "app/scene_city.h"
+#include "io/output_paths.h"
+#include "prepare/scene_city.h"
 #include "base/input_error.h"
 #include "citygen/city_terrain.h"
 #include "description/celestial_parts.h"

@@ -1,27 +1,13 @@
 #include "app/memory_limit.h"
 
 #include "app/option_parsing.h"
-#include "base/input_error.h"
 #include "scene/memory_budget.h"
-
-#include <cstdio>
 
 namespace urbis {
 
 size_t memoryLimit(const std::string& maxMemory) {
     if (!maxMemory.empty()) return parseMemorySize("--max-memory", maxMemory);
     return size_t(kDefaultMemoryShare * double(availableMemoryBytes()));
-}
-
-void requireMemory(size_t bytes, size_t limit, const std::string& what) {
-    if (limit == 0 || bytes <= limit) return;
-    constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
-    char message[320];
-    std::snprintf(message, sizeof message,
-                  "%s needs %zu bytes (%.2f GiB) of memory, more than the %zu bytes (%.2f GiB) allowed "
-                  "(--max-memory; default %.0f %% of the memory available)",
-                  what.c_str(), bytes, double(bytes) / kGiB, limit, double(limit) / kGiB, 100.0 * kDefaultMemoryShare);
-    throw InputError(message, FailureKind::OutOfMemory);
 }
 
 } // namespace urbis

@@ -8,7 +8,7 @@
 #include "animation/frame_range.h"
 #include "app/video_encoding.h"
 #include "base/input_error.h"
-#include "description/scene_lighting.h"
+#include "prepare/scene_lighting.h"
 #include "description/scene_parts.h"
 #include "film/film_output.h"
 #include "render/renderer.h"

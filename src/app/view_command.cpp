@@ -1,8 +1,9 @@
 #include "app/view_command.h"
 
-#include "app/output_paths.h"
-#include "app/view_session.h"
-#include "app/view_window.h"
+#include "app/memory_limit.h"
+#include "io/output_paths.h"
+#include "viewer/view_session.h"
+#include "viewer/view_window.h"
 #include "base/input_error.h"
 #include "io/atomic_file.h"
 #include "viewer/scene_edit.h"
@@ -105,7 +106,7 @@ void runView(const ViewCommandLine& line) {
 
     const size_t threads = run.threads ? run.threads : size_t(tbb::info::default_concurrency());
     tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, threads);
-    ViewSession session(scene, run);
+    ViewSession session(scene, {run.device, run.strict, run.verbose, memoryLimit(run.maxMemory)});
     if (v.headless) runHeadless(session, script, v.frames);
     else runViewerWindow(session, ViewWindowOptions{script, v.frames, v.windowShot});
 

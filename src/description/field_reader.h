@@ -5,7 +5,7 @@
 
 #include "description/animation_json.h"
 #include "description/building_type_names.h"
-#include "description/choice.h"
+#include "base/choice.h"
 #include "description/scene_field.h"
 #include "base/input_error.h"
 #include "math/vec.h"

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "description/animation_json.h"
-#include "description/choice.h"
+#include "base/choice.h"
 #include "description/scene_field.h"
 #include "description/scene_json.h"
 #include "math/vec.h"

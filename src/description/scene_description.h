@@ -5,7 +5,7 @@
 #pragma once
 
 #include "citygen/city_mesher.h"
-#include "description/choice.h"
+#include "base/choice.h"
 #include "description/animation_description.h"
 #include "description/planet_description.h"
 #include "scene/geometry_modes.h"
@@ -186,13 +186,6 @@ struct SceneDescription {
     AnimationDescription animation;   ///< camera and time-of-day keyframes (docs/animation.md)
 };
 
-/// The choices of IntegratorDescription::kind and ::lightSampler.
-inline constexpr Choice<IntegratorKind> kIntegratorKinds[] = {
-    {"path", IntegratorKind::Path}, {"photon-buffers", IntegratorKind::PhotonBuffers}, {"photon-map", IntegratorKind::PhotonMap}};
-inline constexpr Choice<LightSamplerKind> kLightSamplers[] = {{"uniform", LightSamplerKind::Uniform},
-                                                              {"power", LightSamplerKind::Power},
-                                                              {"bvh", LightSamplerKind::Bvh},
-                                                              {"colliders", LightSamplerKind::Colliders}};
 /// The choices of GeometryDescription::traffic: "auto" takes the side of the city's place.
 inline constexpr const char* kTrafficSides[] = {"auto", "right", "left"};
 /// The choices of SkyDescription::model.

@@ -1,7 +1,7 @@
 // The one list of a scene file's keys: each field of SceneDescription with its JSON name, its range,
 // the command-line option that sets it, its help and how far a change of it reaches (Field,
 // description/scene_field.h). The reader and the writer (scene_json.cpp), the command line
-// (app/scene_options.cpp) and the viewer's panel (app/view_panel.cpp) all walk it, so a key added
+// (app/scene_options.cpp) and the viewer's panel (viewer/view_panel.cpp) all walk it, so a key added
 // here is in the file, on the command line and in the panel, and a key the list lacks is unknown.
 #pragma once
 
@@ -20,7 +20,7 @@ namespace urbis {
 ///   v.optionalArray(field, optional, lo, hi)    N numbers in [lo, hi], or null
 ///   v.text(field, string)                       any string
 ///   v.boolean(field, flag)                      true or false
-///   v.choice(field, string, table)              one of the names of `table` (description/choice.h)
+///   v.choice(field, string, table)              one of the names of `table` (base/choice.h)
 ///   v.choiceList(field, strings, names)         an array of distinct `names`
 ///   v.enumeration(field, value, table)          the value of one of the Choices of `table`
 ///   v.colourMap(field, map)                     an object of building type -> colour
@@ -142,8 +142,8 @@ void visitSceneFields(Description& d, Visitor& v) {
     });
     v.object("integrator", [&] {
         v.choice({"kind", "--integrator",
-                  "path (the path tracer), photon-buffers (indirect light from per-block photon buffers) or photon-map "
-                  "(from a hash-grid photon map, the reference)",
+                  "The integrator: the path tracer, or indirect light from per-block photon buffers or a hash-grid "
+                  "photon map, the reference (docs/photons.md)",
                   Restart},
                  d.integrator.kind, kIntegratorKinds);
         v.number({"spp", "--spp", "Samples per pixel", Restart}, d.integrator.spp, 1u, kMaxSpp);

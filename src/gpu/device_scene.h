@@ -31,7 +31,7 @@ struct DeviceScene {
         lights = scene.lights;
     }
 
-    /// Copies again what the time of day sets (description/scene_lighting.h: relightWindows, then
+    /// Copies again what the time of day sets (prepare/scene_lighting.h: relightWindows, then
     /// lightScene): the walls' lit chances, the light list and its BVH, the sky's tables and LUTs, and
     /// the small records. The rest (geometry, BVH, terrain, clouds) does not depend on the hour.
     void uploadLighting(const Scene& scene) {

@@ -1,5 +1,5 @@
 // The integrator interface both backends drive (host+device): one entry point per camera sample,
-// dispatching on RenderSettings::integrator over the closed set of scene/integrator_choice.h.
+// dispatching on RenderSettings::integrator over the kinds of scene/integrator_choice.h.
 #pragma once
 
 #include "integrators/path_tracer.h"
@@ -17,7 +17,6 @@ URBIS_HD inline PathSample integrateSample(const SceneView& scene, const Camera&
     case IntegratorKind::PhotonBuffers:
     case IntegratorKind::PhotonMap:
         return photonCameraSample(scene, camera, settings, px, py, sampleIndex);
-        // VolumetricPath joins here.
     }
     return {};
 }

@@ -11,6 +11,7 @@
 #include "lights/light.h"
 #include "lights/light_sampler.h"
 #include "lights/mis.h"
+#include "lights/star_field.h"
 #include "media/cloud_scattering.h"
 #include "scene/render_settings.h"
 
@@ -107,12 +108,14 @@ URBIS_HD inline void addEscapedEmissionOver(const SceneView& scene, const Render
 }
 
 /// Adds to `radiance` what a ray of `bounce` that meets nothing (unit direction `dir`, the path's
-/// vertex `depth`) sees of the infinite lights, in the list's order, each weighed against its light
-/// samples (their pdfs only where the weight needs them: not for camera rays and specular bounces).
+/// vertex `depth`) sees: the infinite lights, in the list's order, each weighed against its light
+/// samples (their pdfs only where the weight needs them: not for camera rays and specular bounces),
+/// then the stars (lights/star_field.h), which no light sample draws.
 URBIS_HD inline void addEscapedEmission(const SceneView& scene, const RenderSettings& settings, const Ray& ray, Vec3f dir,
                                         uint32_t depth, const BounceInfo& bounce, Vec3f throughput, Vec3f& radiance) {
     addEscapedEmissionOver(scene, settings, ray, dir, depth, bounce, throughput, radiance,
                            std::make_integer_sequence<uint32_t, kLightKindCount>{});
+    radiance += throughput * nightSkyRadiance(scene.night.stars, dir);
 }
 
 /// The shadow ray from `origin`, where the light sample was drawn, towards it. Towards a point of a

@@ -8,7 +8,6 @@
 #include "integrators/camera_sample.h"
 #include "integrators/path_lights.h"
 #include "integrators/water.h"
-#include "lights/star_field.h"
 #include "media/aerial_perspective.h"
 #include "media/planet_atmosphere.h"
 
@@ -73,13 +72,11 @@ URBIS_HD inline void scatterInCloud(const SceneView& scene, const RenderSettings
     s.depth += goesOn;
 }
 
-/// The path's ray met nothing: the infinite lights (addEscapedEmission) and the stars
-/// (lights/star_field.h); the path ends.
+/// The path's ray met nothing: the infinite lights and the stars (addEscapedEmission); the path ends.
 URBIS_HD inline void escape(const SceneView& scene, const RenderSettings& settings, PathState& s) {
     s.throughput *= s.water.transmittance(3.0e38f);   // below a water's surface nothing comes from afar
     const Vec3f dir = normalize(s.ray.dir);
     addEscapedEmission(scene, settings, s.ray, dir, s.depth, s.bounce, s.throughput, s.out.radiance);
-    s.out.radiance += s.throughput * nightSkyRadiance(scene.night.stars, dir);
     s.pathEnds = true;
 }
 

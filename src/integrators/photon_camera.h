@@ -18,16 +18,6 @@ struct CameraChainEnd {
     Vec3f wo;                ///< unit, from the hit back along the chain
 };
 
-/// What a ray of a camera chain (the camera's, or one after specular bounces only) sees where it
-/// escapes: the sky, the sun's disk after a bounce, the moon and the stars, all in full (no light
-/// sample could find them from the chain).
-URBIS_HD inline Vec3f chainEscapeRadiance(const SceneView& scene, Vec3f dir, uint32_t depth) {
-    Vec3f radiance = skyRadiance(scene, dir) + nightSkyRadiance(scene.night.stars, dir);
-    if (depth > 0 && sunEnabled(scene.sun) && sunContains(scene.sun, dir)) radiance += scene.sun.radiance;
-    if (sunContains(scene.night.moon, dir)) radiance += scene.night.moon.radiance;
-    return radiance;
-}
-
 /// A camera sample's chain: its random numbers (drawn up to the chain's end), what it saw on its way
 /// (emitters, the sky) and where it ended.
 struct CameraChain {
@@ -51,7 +41,9 @@ URBIS_HD inline CameraChain followCameraChain(const SceneView& scene, const Came
         ++out.rays;
         const Vec3f dir = normalize(ray.dir);
         if (!hit.valid()) {
-            out.radiance += end.throughput * chainEscapeRadiance(scene, dir, depth);
+            // A camera ray or one after specular bounces: what it sees counts in full, as no light
+            // sample could find it from the chain (the sun's disk only after a bounce).
+            addEscapedEmission(scene, settings, ray, dir, depth, BounceInfo{}, end.throughput, out.radiance);
             return chain;
         }
         applyAerialPerspective(scene, ray, hit.t, end.throughput, out.radiance);

@@ -1,6 +1,8 @@
-// The closed sets a render chooses from (host+device enums): which integrator runs, and how it
-// picks a light for next-event estimation.
+// The closed sets a render chooses from (host+device enums) with the names scene files and options
+// give them: which integrator runs, and how it picks a light for next-event estimation.
 #pragma once
+
+#include "base/choice.h"
 
 #include <cstdint>
 
@@ -11,8 +13,9 @@ enum class IntegratorKind : uint32_t {
     Path,  ///< unidirectional path tracing with MIS (integrators/path_tracer.h)
     PhotonBuffers,  ///< indirect light from per-block photon buffers (Argudo et al.; integrators/photon_camera.h)
     PhotonMap,      ///< indirect light from a hash-grid photon map with progressive radius reduction (the reference)
-    // VolumetricPath (media: atmosphere, clouds) joins here.
 };
+inline constexpr Choice<IntegratorKind> kIntegratorKinds[] = {
+    {"path", IntegratorKind::Path}, {"photon-buffers", IntegratorKind::PhotonBuffers}, {"photon-map", IntegratorKind::PhotonMap}};
 
 /// How the light sampler picks one light of the scene's list (lights/light_sampler.h).
 enum class LightSamplerKind : uint32_t {
@@ -21,5 +24,9 @@ enum class LightSamplerKind : uint32_t {
     Bvh,      ///< by the light BVH at the shading point (Conty Estevez and Kulla 2018; lights/light_bvh.h)
     Colliders,  ///< the thesis's colliders: uniformly among the lights near the point (lights/collider_lights.h)
 };
+inline constexpr Choice<LightSamplerKind> kLightSamplers[] = {{"uniform", LightSamplerKind::Uniform},
+                                                              {"power", LightSamplerKind::Power},
+                                                              {"bvh", LightSamplerKind::Bvh},
+                                                              {"colliders", LightSamplerKind::Colliders}};
 
 } // namespace urbis

@@ -3,11 +3,11 @@
 // scene files. The window (view_window.h) and the headless loop (view_command.cpp) both drive it.
 #pragma once
 
-#include "app/render_command.h"
-#include "app/view_renderer.h"
+#include "viewer/view_renderer.h"
 #include "description/scene_description.h"
 #include "film/aov_display.h"
 #include "osm/place_names.h"
+#include "prepare/prepared_scene.h"
 #include "viewer/view_camera.h"
 #include "viewer/view_script.h"
 
@@ -30,11 +30,20 @@ struct ViewStats {
     double lastFrameSeconds = 0;    ///< render and picture of the last frame
 };
 
+/// Where and within what the session renders: the device ("auto", "cpu" or "cuda"), whether warnings
+/// are errors, whether it says which device renders, and the host memory it may take (0: no limit).
+struct ViewRunOptions {
+    std::string device = "auto";
+    bool strict = false;
+    bool verbose = false;
+    size_t memoryLimit = 0;
+};
+
 class ViewSession {
 public:
     /// Builds the scene of `scene` and the camera it names (from the framing, placed by geography,
     /// or as given), and starts its image. Throws InputError as `urbis render` would.
-    ViewSession(const SceneDescription& scene, const RunOptions& run);
+    ViewSession(const SceneDescription& scene, const ViewRunOptions& run);
     ~ViewSession();
 
     const SceneDescription& scene() const { return scene_; }
@@ -114,8 +123,7 @@ private:
     /// Distance along a unit ray to the first surface of the scene (the controller's CameraProbe).
     float probe(Vec3f origin, Vec3f dir, float maxDistance) const;
 
-    RunOptions run_;
-    size_t memoryLimit_ = 0;
+    ViewRunOptions run_;
     SceneDescription scene_;
     std::unique_ptr<PreparedScene> prepared_;
     std::unique_ptr<ProgressiveRenderer> renderer_;

@@ -1,10 +1,10 @@
 // The viewer's window: GLFW for the window and the input, Dear ImGui (its GLFW and OpenGL 3 backends)
 // for the panel and the overlay, and the picture as an OpenGL texture drawn behind them: from a pixel
 // buffer that CUDA writes where the film is on the GPU, else from the host.
-#include "app/view_window.h"
+#include "viewer/view_window.h"
 
-#include "app/host_memory.h"
-#include "app/view_panel.h"
+#include "base/host_memory.h"
+#include "viewer/view_panel.h"
 #include "base/input_error.h"
 #include "film/image.h"
 #include "gpu/gpu_gl_buffer.h"

@@ -1,6 +1,6 @@
 // The viewer's window where urbis was built without GLFW and Dear ImGui (CMakeLists.txt picks this
 // file or view_window.cpp).
-#include "app/view_window.h"
+#include "viewer/view_window.h"
 
 #include "base/input_error.h"
 

@@ -1,4 +1,4 @@
-#include "app/view_renderer.h"
+#include "viewer/view_renderer.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "app/output_paths.h"
+#include "io/output_paths.h"
 
 #include "base/input_error.h"
 

@@ -1,4 +1,4 @@
-#include "app/host_memory.h"
+#include "base/host_memory.h"
 
 #include <sys/resource.h>
 

@@ -3,7 +3,7 @@
 // elsewhere view_window_none.cpp says so and only --headless runs.
 #pragma once
 
-#include "app/view_session.h"
+#include "viewer/view_session.h"
 #include "viewer/view_script.h"
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "description/scene_lighting.h"
+#include "prepare/scene_lighting.h"
 
 #include "description/celestial_parts.h"
 #include "description/scene_parts.h"

@@ -1,4 +1,4 @@
-#include "app/planet_scene.h"
+#include "prepare/planet_scene.h"
 
 #include "description/celestial_parts.h"
 #include "description/scene_parts.h"

@@ -1,4 +1,4 @@
-#include "app/scene_city.h"
+#include "prepare/scene_city.h"
 
 #include "description/scene_parts.h"
 #include "layout/city_layout.h"

@@ -1,7 +1,7 @@
-#include "app/view_session.h"
+#include "viewer/view_session.h"
 
-#include "app/memory_limit.h"
-#include "app/output_paths.h"
+#include "base/memory_requirement.h"
+#include "io/output_paths.h"
 #include "base/input_error.h"
 #include "cpu/cpu_denoiser.h"
 #include "description/celestial_parts.h"
@@ -28,9 +28,8 @@ constexpr float kDefaultPivot = 100.0f;
 
 } // namespace
 
-ViewSession::ViewSession(const SceneDescription& scene, const RunOptions& run)
-    : run_(run), memoryLimit_(memoryLimit(run.maxMemory)), scene_(scene) {
-    prepared_ = std::make_unique<PreparedScene>(prepareScene(scene_, run_.strict, memoryLimit_));
+ViewSession::ViewSession(const SceneDescription& scene, const ViewRunOptions& run) : run_(run), scene_(scene) {
+    prepared_ = std::make_unique<PreparedScene>(prepareScene(scene_, run_.strict, run_.memoryLimit));
     renderer_ = std::make_unique<ProgressiveRenderer>(prepared_->scene, renderSettingsOf(scene_).integrator, run_.device, run_.verbose);
     controller_ = std::make_unique<CameraController>(
         ViewCamera{}, [this](Vec3f o, Vec3f d, float maxDistance) { return probe(o, d, maxDistance); });
@@ -90,7 +89,7 @@ bool ViewSession::edit(const SceneDescription& next) {
     const double start = now();
     try {
         if (change == SceneChange::Rebuild) {
-            auto prepared = std::make_unique<PreparedScene>(prepareScene(next, false, memoryLimit_));
+            auto prepared = std::make_unique<PreparedScene>(prepareScene(next, false, run_.memoryLimit));
             auto renderer = std::make_unique<ProgressiveRenderer>(prepared->scene, renderSettingsOf(next).integrator, run_.device,
                                                                   run_.verbose);
             renderer_ = std::move(renderer);   // the old renderer refers to the old scene: it goes first
@@ -162,7 +161,7 @@ bool ViewSession::screenshot(const std::string& path, uint32_t width, uint32_t h
             if (height) shot.film.height = height;
             shot.integrator.spp = spp ? spp : std::max(renderer_->samples(), 1u);
             const bool aovs = shot.film.denoise || filmOutputNeedsAovs(path, layers);
-            requireMemory(hostFilmBytes(shot.film.width, shot.film.height, aovs), memoryLimit_, "the screenshot");
+            requireMemory(hostFilmBytes(shot.film.width, shot.film.height, aovs), run_.memoryLimit, "the screenshot");
             const RenderSettings settings = renderSettingsOf(shot);
             const Camera camera = cameraOf(shot.camera, float(shot.film.width) / float(shot.film.height),
                                            prepared_->origin, prepared_->framingPieces, groundOf(prepared_->scene));

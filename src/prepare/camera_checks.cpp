@@ -1,4 +1,4 @@
-#include "app/camera_checks.h"
+#include "prepare/camera_checks.h"
 
 #include "model/polygon_ops.h"
 

@@ -1,4 +1,4 @@
-#include "app/view_panel.h"
+#include "viewer/view_panel.h"
 
 #include "astro/civil_time.h"
 #include "description/scene_fields.h"

@@ -1,7 +1,7 @@
 // `urbis render --planet`: a whole planet's prepared scene from the description (docs/planets.md).
 #pragma once
 
-#include "app/render_command.h"
+#include "prepare/prepared_scene.h"
 
 namespace urbis {
 
