@@ -1,5 +1,6 @@
 #include "app/export_command.h"
 
+#include "base/step_timer.h"
 #include "app/memory_limit.h"
 #include "io/output_paths.h"
 #include "prepare/scene_city.h"
@@ -14,7 +15,6 @@
 #include "export/obj_file.h"
 #include "io/atomic_file.h"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -70,7 +70,7 @@ GeometryModes exportModesOf(const std::string& lod) {
 } // namespace
 
 void runExport(const ExportCommandLine& line) {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = SteadyClock::now();
     const ExportOptions& o = line.options;
     checkOutputPath("--out", o.out, {".glb", ".gltf", ".obj"});
     checkOutputPath("--save-scene", line.scene.saveScenePath(), {".json"});
@@ -106,7 +106,7 @@ void runExport(const ExportCommandLine& line) {
     }
     std::printf("urbis: wrote %s (%zu nodes, %zu triangles, %zu materials) in %.2f s\n", files.c_str(), scene.nodes.size(),
                 scene.triangleCount(), scene.materials.size(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                secondsSince(start));
 }
 
 } // namespace urbis

@@ -1,5 +1,6 @@
 #include "app/render_command.h"
 
+#include "base/step_timer.h"
 #include "app/devices_option.h"
 #include "app/memory_json.h"
 #include "app/memory_limit.h"
@@ -19,7 +20,6 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
-#include <chrono>
 #include <cstdio>
 #include <unistd.h>
 
@@ -51,9 +51,6 @@ void addRunOptions(CLI::App& cmd, RunOptions& o) {
 }
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 /// The scene's bytes by array, with the stored triangles of each street kind (roads, junctions,
 /// sidewalks, ground cover, water, bridges, railways, the lamps' twin) under that kind's key rather than
@@ -130,7 +127,7 @@ void writeStats(const RenderOptions& o, const PreparedScene& prepared, const Ren
 } // namespace
 
 void runRender(const RenderOptions& o, const MpiWorld* world) {
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     const RunOptions& run = o.run;
     const FilmDescription& film = o.scene.film;
     size_t threads = run.threads ? run.threads : size_t(tbb::info::default_concurrency());
@@ -174,7 +171,7 @@ void runRender(const RenderOptions& o, const MpiWorld* world) {
         ->render(prepared.camera, settings, image.nextSamples(settings.spp), image, film.denoise, isatty(2), counters, device);
     if (!writes) return;
 
-    auto t0 = Clock::now();
+    auto t0 = SteadyClock::now();
     writeFilm(image, film.output, FilmOutputOptions{film.exposure, film.exrFloat, layers});
     double secondsWrite = secondsSince(t0);
 

@@ -1,5 +1,6 @@
 #include "app/render_frames.h"
 
+#include "base/step_timer.h"
 #include "cluster/frame_spread.h"
 #include "cluster/tile_queue.h"
 #include "cluster/tile_workers.h"
@@ -13,7 +14,6 @@
 #include "film/film_output.h"
 #include "render/renderer.h"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -24,8 +24,6 @@
 namespace urbis {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 FrameRange frameRangeOf(const RenderOptions& o) {
     std::string error;
@@ -69,7 +67,7 @@ void checkFrameOptions(const RenderOptions& o) {
 }
 
 void renderFrames(const RenderOptions& o, PreparedScene& prepared, const std::vector<int>& gpus, const MpiWorld* world) {
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     const FilmDescription& film = o.scene.film;
     const std::string& pattern = film.output;
     const FrameRange range = frameRangeOf(o);
@@ -108,7 +106,7 @@ void renderFrames(const RenderOptions& o, PreparedScene& prepared, const std::ve
     runOnWorkerThreads(renderers.size(), [&](size_t b) {
         Renderer& renderer = *renderers[b];
         for (int32_t i; (i = queue.take()) >= 0;) {
-            const auto t0 = Clock::now();
+            const auto t0 = SteadyClock::now();
             const uint32_t n = frames[size_t(i)];
             Camera camera;
             FilmOutputOptions output;
@@ -131,7 +129,7 @@ void renderFrames(const RenderOptions& o, PreparedScene& prepared, const std::ve
             renderer.render(camera, settings, image.nextSamples(settings.spp), image, film.denoise, showProgress, counters, report);
             const std::string path = framePath(pattern, n);
             writeFilm(image, path, output);
-            const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+            const double seconds = secondsSince(t0);
             const std::lock_guard<std::mutex> held(lock);
             device = report.device;
             secondsRendering += seconds;
@@ -150,7 +148,7 @@ void renderFrames(const RenderOptions& o, PreparedScene& prepared, const std::ve
     }
     std::printf("urbis: wrote %zu frames of %s (%ux%u, %u spp, %s) in %.2f s\n", frames.size(), pattern.c_str(),
                 settings.width, settings.height, settings.spp, device.c_str(),
-                std::chrono::duration<double>(Clock::now() - start).count());
+                secondsSince(start));
 }
 
 } // namespace urbis

@@ -1,5 +1,6 @@
 #include "cpu/cpu_photons.h"
 
+#include "base/step_timer.h"
 #include "integrators/photon_buffer_layout.h"
 #include "integrators/photon_camera.h"
 #include "integrators/photon_emission_setup.h"
@@ -10,14 +11,10 @@
 
 #include <atomic>
 #include <bit>
-#include <chrono>
 
 namespace urbis {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 /// Traces the pass's photons, handing each one's stores to sinkOf(photon index); returns the rays.
 template <typename SinkOf>
@@ -57,7 +54,7 @@ double timeLightingPassCpu(const SceneView& view, const Camera& camera, const Re
             ends[size_t(y) * settings.width + x] = followCameraChain(view, camera, settings, x, y, sample).end;
     });
     std::vector<Vec3f> indirect(pixels);
-    const auto t = Clock::now();
+    const auto t = SteadyClock::now();
     tbb::parallel_for(tbb::blocked_range<size_t>(0, pixels, 1024), [&](const tbb::blocked_range<size_t>& range) {
         for (size_t i = range.begin(); i < range.end(); ++i)
             if (ends[i].hit.valid()) indirect[i] = ends[i].throughput * photonIndirect(view, settings.integrator, ends[i].hit, ends[i].wo);
@@ -104,7 +101,7 @@ CpuPhotonPasses::CpuPhotonPasses(const Scene& scene) : scene_(scene), view_(scen
 PhotonsView CpuPhotonPasses::runPass(const Camera& camera, const RenderSettings& settings, uint32_t sample,
                                      PhotonTimings& timings) {
     SceneView view = view_;
-    auto t = Clock::now();
+    auto t = SteadyClock::now();
     if (settings.integrator == IntegratorKind::PhotonBuffers) {
         if (!state_.built) {
             state_.blocks = buildPhotonBlocks(scene_);
@@ -126,7 +123,7 @@ PhotonsView CpuPhotonPasses::runPass(const Camera& camera, const RenderSettings&
         }
         b.texels = state_.texels.data();
         timings.flags += secondsSince(t);
-        t = Clock::now();
+        t = SteadyClock::now();
         timings.photonRays += tracePhotonsCpu(view, settings, [&](uint32_t) { return PhotonSplatSink{b}; });
         ++state_.passes;
         timings.photons += secondsSince(t);
@@ -146,7 +143,7 @@ PhotonsView CpuPhotonPasses::runPass(const Camera& camera, const RenderSettings&
             if (maxComponent(p.power) > 0.0f) stored_.push_back(p);
         timings.stored += stored_.size();
         timings.photons += secondsSince(t);
-        t = Clock::now();
+        t = SteadyClock::now();
         view.photons.grid = buildPhotonGridCpu(stored_, photonRadiusAt(settings.photonRadius, settings.photonAlpha, sample),
                                                sorted_, start_, end_);
         timings.grid += secondsSince(t);

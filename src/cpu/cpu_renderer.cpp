@@ -1,5 +1,6 @@
 #include "cpu/cpu_renderer.h"
 
+#include "base/step_timer.h"
 #include "integrators/aov_sample.h"
 #include "integrators/path_samples.h"
 
@@ -7,7 +8,6 @@
 #include <tbb/parallel_for.h>
 
 #include <atomic>
-#include <chrono>
 #include <cstdio>
 #include <mutex>
 #include <stdexcept>
@@ -49,7 +49,7 @@ void renderRect(const SceneView& scene, const Camera& camera, const RenderSettin
         throw std::invalid_argument("renderCpu: the rectangle is not inside the film");
     const FilmView view = film.view();
     std::atomic<uint64_t> rays{0};
-    auto start = std::chrono::steady_clock::now();
+    const auto start = SteadyClock::now();
     constexpr size_t kTile = 16;
     tbb::parallel_for(
         tbb::blocked_range2d<uint32_t>(rect.y0, rect.y1, kTile, rect.x0, rect.x1, kTile),
@@ -64,7 +64,7 @@ void renderRect(const SceneView& scene, const Camera& camera, const RenderSettin
             progress.advance(tile.rows().size() * tile.cols().size());
         },
         tbb::simple_partitioner());
-    counters.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    counters.seconds = secondsSince(start);
     counters.rays = rays;
 }
 

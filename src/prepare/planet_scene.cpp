@@ -1,16 +1,16 @@
 #include "prepare/planet_scene.h"
 
+#include "base/step_timer.h"
 #include "description/celestial_parts.h"
 #include "description/scene_parts.h"
 #include "media/cloud_build.h"
 #include "planet/planet_build.h"
 
-#include <chrono>
 
 namespace urbis {
 
 PreparedScene preparePlanetScene(const SceneDescription& d) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = SteadyClock::now();
     const PlanetDescription& p = *d.planet;
     PlanetShape shape;
     shape.radius = p.radiusKm * 1e3;
@@ -36,7 +36,7 @@ PreparedScene preparePlanetScene(const SceneDescription& d) {
     buildClouds(prepared.scene, cloudLayerOf(d.clouds));  // the shell around the planet (media/cloud_shell.h)
     prepared.camera = planetCamera(placement, float(d.film.width) / float(d.film.height));
     prepared.summary.source = "planet";
-    prepared.secondsBvh = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    prepared.secondsBvh = secondsSince(t0);
     return prepared;
 }
 

@@ -1,5 +1,6 @@
 #include "prepare/prepared_scene.h"
 
+#include "base/step_timer.h"
 #include "base/input_error.h"
 #include "citygen/city_mesher.h"
 #include "citygen/city_scene.h"
@@ -12,15 +13,11 @@
 #include "prepare/scene_city.h"
 #include "prepare/scene_lighting.h"
 
-#include <chrono>
 #include <cstdio>
 
 namespace urbis {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 /// Says on stderr what is wrong with the camera, or when `strict` fails on the first problem.
 void checkCamera(bool strict, const Camera& camera, const CityModel& city, const Bounds3f& cityBounds) {
@@ -69,11 +66,11 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
     CityMesh mesh;
     TerrainField terrain;
     {
-        auto t0 = Clock::now();
+        auto t0 = SteadyClock::now();
         CityModel city = loadSceneCity(d);
         p.secondsImport = secondsSince(t0);
 
-        t0 = Clock::now();
+        t0 = SteadyClock::now();
         mesh = meshCity(city, meshOptions);
         terrain = cityTerrainOf(d.terrain, city.origin, mesh, d.water);
         p.secondsCitygen = secondsSince(t0);
@@ -87,7 +84,7 @@ PreparedScene prepareScene(const SceneDescription& d, bool strict, size_t memory
         p.summary = summarise(city, mesh);
     }  // the city is released here, before the scene's copy of the mesh is made
 
-    auto t0 = Clock::now();
+    auto t0 = SteadyClock::now();
     const Vec3f centre = mesh.cityBounds.empty() ? Vec3f{} : mesh.cityBounds.centre();
     p.scene = buildCityScene(mesh, *wallTileSizeOf(d.geometry.wallTiles), centre, terrain);
     buildClouds(p.scene, cloudLayerOf(d.clouds));

@@ -1,20 +1,17 @@
 #include "render/renderer.h"
 
+#include "base/step_timer.h"
 #include "base/input_error.h"
 #include "cluster/tile_grid.h"
 #include "cluster/tile_workers.h"
 #include "render/cpu_device.h"
 #include "render/gpu_device.h"
 
-#include <chrono>
 #include <cstdio>
 
 namespace urbis {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 /// Seconds of a light pass's parts so far (the GPU's: event times).
 double lightPassSeconds(const PhotonTimings& t) { return t.flags + t.photons + t.grid; }
@@ -110,7 +107,7 @@ void Renderer::renderOnOne(const Camera& camera, const RenderSettings& settings,
 
 void Renderer::renderOnDevices(const Camera& camera, const RenderSettings& settings, SampleRange samples, Film& film,
                                bool denoise, RenderCounters& counters, DeviceReport& report) {
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     std::vector<PhotonTimings> timings(devices_.size());
     std::vector<RenderCounters> lightCounters(devices_.size());
     std::vector<PhotonsView> photons(devices_.size());
@@ -151,7 +148,7 @@ void Renderer::renderAcrossRanks(const Camera& camera, const RenderSettings& set
     const bool onGpu = std::string(device.kind()) == "cuda";
     const std::vector<PixelRect> tiles =
         tilesOf(film.width, film.height, tileSizeFor(film.width, film.height, world.ranks(), onGpu ? kGpuTileSide : 64));
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     PhotonTimings timings;
     PhotonsView photons;
     bool first = true;
@@ -175,7 +172,7 @@ void Renderer::renderAcrossRanks(const Camera& camera, const RenderSettings& set
 
 double Renderer::denoiseOnFirst(Film& film, bool denoise, bool upload) {
     if (!denoise) return 0;
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     RenderDevice& device = *devices_[0];
     if (upload) device.setFilm(film);
     device.denoise();
