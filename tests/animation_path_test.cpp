@@ -17,20 +17,20 @@ using namespace urbis;
 
 namespace {
 
-CameraKeyframe at(double time, Vec3f position, Vec3f target, float fov = 50.0f, std::string ease = "linear") {
+CameraKeyframe at(double time, Vec3f position, Vec3f target, float fov = 50.0f, Easing ease = Easing::Linear) {
     CameraKeyframe k;
     k.time = time;
     k.position = position;
     k.target = target;
     k.fov = fov;
-    k.ease = std::move(ease);
+    k.ease = ease;
     return k;
 }
 
 float distance(Vec3f a, Vec3f b) { return length(a - b); }
 
 /// A fly-around of five keyframes at uneven times and spacings, looking at the centre.
-std::vector<CameraKeyframe> flyAround(const std::string& ease = "linear") {
+std::vector<CameraKeyframe> flyAround(Easing ease = Easing::Linear) {
     return {at(0.0, {300, 120, 0}, {0, 10, 0}, 50, ease), at(1.5, {0, 150, 300}, {0, 10, 0}, 40, ease),
             at(2.0, {-250, 90, 40}, {10, 20, 0}, 45, ease), at(4.0, {-20, 200, -310}, {0, 10, 0}, 60, ease),
             at(7.0, {290, 80, -20}, {0, 10, 5}, 50, ease)};
@@ -119,14 +119,14 @@ TEST(CameraPath, CentripetalSplineOfPointsOnALineStaysOnIt) {
 }
 
 TEST(CameraPath, EaseInOutComesToRestAtTheKeyframes) {
-    const CameraPath linear(flyAround("linear"), CameraDescription{}, GeoOrigin{});
-    const CameraPath eased(flyAround("ease_in_out"), CameraDescription{}, GeoOrigin{});
+    const CameraPath linear(flyAround(Easing::Linear), CameraDescription{}, GeoOrigin{});
+    const CameraPath eased(flyAround(Easing::EaseInOut), CameraDescription{}, GeoOrigin{});
     const double t = 1.5, h = 1e-3;
     const float linearStep = distance(*linear.at(t).position, *linear.at(t + h).position);
     const float easedStep = distance(*eased.at(t).position, *eased.at(t + h).position);
     EXPECT_GT(linearStep, 0.05f);
     EXPECT_LT(easedStep, linearStep * 0.05f) << "ease_in_out leaves the keyframe at rest";
-    EXPECT_EQ(urbis::eased(0.5f, 3), 0.5f);
+    EXPECT_EQ(urbis::eased(0.5f, Easing::EaseInOut), 0.5f);
 }
 
 TEST(CameraPath, KeyframesWithoutALookTakeTheScenesTarget) {
@@ -195,7 +195,7 @@ TEST(AnimationTimeline, FramesRunToTheDurationOrTheLastKeyframe) {
 TEST(AnimationJson, ReadsWhatItWrites) {
     AnimationDescription a;
     a.fps = 30;
-    a.camera = flyAround("ease_out");
+    a.camera = flyAround(Easing::EaseOut);
     a.camera[2].target.reset();
     a.camera[2].heading = 12.5f;
     a.camera[2].pitch = -20;
@@ -206,7 +206,7 @@ TEST(AnimationJson, ReadsWhatItWrites) {
     ASSERT_EQ(b.camera.size(), 5u);
     EXPECT_EQ(*b.camera[2].heading, 12.5f);
     EXPECT_FALSE(b.camera[3].fov);
-    EXPECT_EQ(b.camera[0].ease, "ease_out");
+    EXPECT_EQ(b.camera[0].ease, Easing::EaseOut);
 }
 
 TEST(AnimationJson, BadKeyframesGiveOneLineNamingTheFileAndTheKey) {

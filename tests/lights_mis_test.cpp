@@ -51,8 +51,16 @@ TEST(LightsMis, WeightsOfBothStrategiesSumToOne) {
                         const float cosLight = record.kind == kLightKindOf<EmissiveSurfaceLight> ? -s.dir.y : 0.0f;
                         const float found = pmf * lightPdf(view, record, s.dir, s.distance, cosLight);
                         EXPECT_NEAR(found, lightPdfTotal, 1e-3f * lightPdfTotal);
-                        const float sum = lightSampleWeight(record.kind, lightSamples, lightPdfTotal, bsdf) +
-                                          bsdfFoundWeight(bsdf, record.kind, lightSamples, pmf, s.pdf);
+                        // The BSDF sample's weight as the path tracer gives it (the sun's: none, without a pmf).
+                        RenderSettings settings;
+                        settings.lightSamples = lightSamples;
+                        settings.lightSampler = kind;
+                        const BounceInfo bounce{bsdf, false, true, {from, n}};
+                        const float bsdfWeight = dispatchLight(record.kind, [&](auto k) {
+                            return foundWeight<typename decltype(k)::Light>(view, settings, bounce, [&] { return light; },
+                                                                            s.dir, s.distance, cosLight);
+                        });
+                        const float sum = lightSampleWeight(record.kind, lightSamples, lightPdfTotal, bsdf) + bsdfWeight;
                         EXPECT_NEAR(sum, 1.0f, 1e-5f);
                         ++checked;
                     }

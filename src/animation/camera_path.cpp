@@ -8,8 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
-#include <string_view>
 
 namespace urbis {
 
@@ -25,20 +23,21 @@ Vec3f anglesOf(Vec3f dir) {
 
 } // namespace
 
-float eased(float u, int ease) {
+float eased(float u, Easing ease) {
     switch (ease) {
-    case 1: return u * u;                        // ease_in: leaves the keyframe at rest
-    case 2: return u * (2.0f - u);               // ease_out: arrives at rest
-    case 3: return u * u * (3.0f - 2.0f * u);    // ease_in_out: smoothstep
-    default: return u;
+    case Easing::EaseIn: return u * u;                        // leaves the keyframe at rest
+    case Easing::EaseOut: return u * (2.0f - u);              // arrives at rest
+    case Easing::EaseInOut: return u * u * (3.0f - 2.0f * u); // smoothstep
+    case Easing::Linear: break;
     }
+    return u;
 }
 
 CameraPath::CameraPath(std::span<const CameraKeyframe> keyframes, const CameraDescription& camera, const GeoOrigin& origin) {
     for (size_t i = 0; i < keyframes.size(); ++i) {
         const CameraKeyframe& k = keyframes[i];
         const std::string where = "animation.camera[" + std::to_string(i) + "]";
-        Pose pose{k.time, {}, {}, {}, 0};
+        Pose pose{k.time, {}, {}, {}, Easing::Linear};
         if (k.position) {
             pose.position = *k.position;
         } else {
@@ -57,7 +56,7 @@ CameraPath::CameraPath(std::span<const CameraKeyframe> keyframes, const CameraDe
             pose.angles = anglesOf(pose.target - pose.position);
         }
         pose.angles.z = k.fov.value_or(camera.fov);
-        pose.ease = int(std::find(std::begin(kEasings), std::end(kEasings), std::string_view(k.ease)) - std::begin(kEasings));
+        pose.ease = k.ease;
         if (!poses_.empty()) {   // the heading the short way round from the keyframe before
             const float before = poses_.back().angles.x;
             pose.angles.x -= 360.0f * std::round((pose.angles.x - before) / 360.0f);

@@ -34,13 +34,13 @@ private:
         double time;
         Vec3f position, target;
         Vec3f angles;   ///< heading (unwrapped: within 180 of the one before), pitch, fov; degrees
-        int ease;       ///< index into kEasings
+        Easing ease;
     };
     std::vector<Pose> poses_;
     bool byTarget_ = true;   ///< every keyframe looks at a point: the target is splined
 };
 
-/// `u` in [0, 1] run through by the easing of kEasings[`ease`]: 0 and 1 stay put.
-float eased(float u, int ease);
+/// `u` in [0, 1] run through by `ease`: 0 and 1 stay put.
+float eased(float u, Easing ease);
 
 } // namespace urbis

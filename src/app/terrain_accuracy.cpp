@@ -95,7 +95,7 @@ void runTerrainAccuracy(const BenchOptions& o, bool onGpu, const std::string& de
         std::vector<float> t, ms;
         traceMarch(field, march, rays, onGpu, o.warmup, repeats, t, ms);
         const MarchAccuracy a = marchAccuracy(r, field.data.data(), rays, t, reference);
-        const char* name = kTerrainMarches[uint32_t(march)];
+        const char* name = nameOfChoice(kTerrainMarches, march);
         std::printf("%-10s %8zu %8zu %8zu %12.3g %12.3g %12.3g %11.3f\n", name, a.hits, a.missed, a.extra, a.meanHde,
                     a.maxHde, a.meanIde, medianOf(ms));
         json["methods"][name] = {{"hits", a.hits}, {"missed_intersections", a.missed}, {"extra_intersections", a.extra},

@@ -12,7 +12,7 @@ TerrainField cityTerrainOf(const TerrainParams& params, const GeoOrigin& origin,
     TerrainField terrain = buildTerrain(params, origin, centre.x, centre.z, uint32_t(mesh.materials.size()));
     std::vector<Material> materials = terrainMaterials();
     // Real elevation under a city is the city's ground where nothing covers it, not a meadow.
-    if (params.kind != "fbm" && mesh.groundMaterial < mesh.materials.size())
+    if (!params.hasFbm() && mesh.groundMaterial < mesh.materials.size())
         materials[uint32_t(TerrainMaterial::Grass)] = mesh.materials[mesh.groundMaterial];
     for (const Material& m : materials) mesh.materials.push_back(m);
     // Each water body at its level over the terrain, its bed: no flat layer under the surface to pass;

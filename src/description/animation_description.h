@@ -3,6 +3,7 @@
 // any instant; description/animation_json.h reads and writes their JSON.
 #pragma once
 
+#include "base/choice.h"
 #include "math/vec.h"
 
 #include <array>
@@ -12,8 +13,10 @@
 
 namespace urbis {
 
-/// The easings of a camera keyframe: how the segment from it to the next one is run through.
-inline constexpr const char* kEasings[] = {"linear", "ease_in", "ease_out", "ease_in_out"};
+/// How the segment from a camera keyframe to the next one is run through (animation/camera_path.h: eased).
+enum class Easing { Linear, EaseIn, EaseOut, EaseInOut };
+inline constexpr Choice<Easing> kEasings[] = {
+    {"linear", Easing::Linear}, {"ease_in", Easing::EaseIn}, {"ease_out", Easing::EaseOut}, {"ease_in_out", Easing::EaseInOut}};
 
 /// Where the camera is at `time` and where it looks. Exactly one of `position` and `geo`; at most
 /// one of `target` and heading/pitch (neither: the keyframe looks at the scene's camera.target);
@@ -25,7 +28,7 @@ struct CameraKeyframe {
     std::optional<Vec3f> target;                  ///< world metres: the point looked at
     std::optional<float> heading, pitch;          ///< degrees clockwise from north; above the horizon
     std::optional<float> fov;                     ///< vertical field of view, degrees
-    std::string ease = "linear";                  ///< one of kEasings, for the segment to the next keyframe
+    Easing ease = Easing::Linear;                 ///< for the segment to the next keyframe
 };
 
 /// The date and time of day at `time`: the sun, the sky, the moon, the stars and the lit windows

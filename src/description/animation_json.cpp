@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <iterator>
 
 namespace urbis {
 
@@ -126,10 +125,9 @@ void readCameraKeyframe(ObjectReader& k, CameraKeyframe& frame) {
         k.fail("target", "is the keyframe's position");
     if (const auto fov = k.number("fov", 1.0, 170.0)) frame.fov = float(*fov);
     if (const json* ease = k.find("ease")) {
-        const bool known = ease->is_string() &&
-                           std::find(std::begin(kEasings), std::end(kEasings), ease->get<std::string>()) != std::end(kEasings);
-        if (!known) k.fail("ease", "expected one of linear, ease_in, ease_out, ease_in_out");
-        frame.ease = ease->get<std::string>();
+        const std::optional<Easing> easing = ease->is_string() ? choiceNamed(kEasings, ease->get<std::string>()) : std::nullopt;
+        if (!easing) k.fail("ease", "expected one of linear, ease_in, ease_out, ease_in_out");
+        frame.ease = *easing;
     }
 }
 
@@ -171,7 +169,7 @@ json keyframesToJson(const std::vector<CameraKeyframe>& keyframes) {
         if (k.heading) frame["heading"] = floatJson(*k.heading);
         if (k.pitch) frame["pitch"] = floatJson(*k.pitch);
         if (k.fov) frame["fov"] = floatJson(*k.fov);
-        frame["ease"] = k.ease;
+        frame["ease"] = nameOfChoice(kEasings, k.ease);
         out.push_back(frame);
     }
     return out;

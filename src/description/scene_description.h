@@ -186,8 +186,9 @@ struct SceneDescription {
     AnimationDescription animation;   ///< camera and time-of-day keyframes (docs/animation.md)
 };
 
-/// The choices of GeometryDescription::traffic: "auto" takes the side of the city's place.
-inline constexpr const char* kTrafficSides[] = {"auto", "right", "left"};
+/// The choices of GeometryDescription::traffic: "auto" (none) takes the side of the city's place.
+inline constexpr Choice<std::optional<TrafficSide>> kTrafficSides[] = {
+    {"auto", std::nullopt}, {"right", TrafficSide::Right}, {"left", TrafficSide::Left}};
 /// The choices of SkyDescription::model.
 inline constexpr Choice<SkyModel> kSkyModels[] = {{"atmosphere", SkyModel::Atmosphere}, {"analytic", SkyModel::Analytic}};
 /// The choices of CloudsDescription::type.

@@ -39,9 +39,15 @@ URBIS_HD inline float foundWeight(const SceneView& scene, const RenderSettings& 
     if (!weighs || settings.lightSamples == 0) return 1.0f;
     const uint32_t light = lightOf();
     if (light == kNoLight) return 1.0f;
-    return bsdfFoundWeight(bounce.pdf, kLightKindOf<Light>, settings.lightSamples,
-                           lightSelectionPmf(scene, settings.lightSampler, bounce.from, light),
-                           Light::pdf(scene, lightRecord(scene, light), bounce.from.p, dir, distance, cosLight));
+    // Every sampler picks an infinite light of the list with a positive probability everywhere (its
+    // power is positive, and the infinite lights have a share of every choice), so where MIS does not
+    // weigh it, its light samples carry all of it. No pick probability then: the GPU's render kernel
+    // holds one inlined copy of lightSelectionPmf per call, and the escape calls it per infinite kind.
+    if constexpr (Light::kInfinite && !Light::kMisWeighs) return 0.0f;
+    const float pmf = lightSelectionPmf(scene, settings.lightSampler, bounce.from, light);
+    if constexpr (!Light::kMisWeighs) return pmf > 0.0f ? 0.0f : 1.0f;
+    else return bsdfFoundWeight(bounce.pdf, kLightKindOf<Light>, settings.lightSamples, pmf,
+                                Light::pdf(scene, lightRecord(scene, light), bounce.from.p, dir, distance, cosLight));
 }
 
 /// Weight of one of `lightSamples` light samples of a light of kind `kind`, of solid-angle pdf

@@ -38,16 +38,17 @@ struct PathState {
     BounceInfo bounce{};            ///< how pathRay was drawn
     PathVertex vertex{};            ///< the last scattering vertex, whose light samples are pending
     Vec3f shadowContribution{};     ///< what the shadow ray in flight adds if nothing blocks it
-    CloudOctaves shadowOctaves{};   ///< and how the clouds' transmittance weighs it
     bool tracingShadow = false, pathEnds = false;
     uint32_t lightSamplesLeft = 0;
     uint32_t depth = 0;             ///< scattering vertices so far
     WaterPath water{};              ///< the absorption of the water the path is in
 };
 
-/// A shadow ray came back: what it carries arrives if nothing blocked it.
-URBIS_HD inline void addUnblockedShadow(const SceneView& scene, PathState& s, const SurfaceHit& hit) {
-    if (!hit.valid()) s.out.radiance += s.shadowContribution * cloudTransmittance(scene, s.ray, s.shadowOctaves, s.rng);
+/// A shadow ray came back: what it carries arrives if nothing blocked it, times the clouds'
+/// transmittance weighed by `octaves`.
+URBIS_HD inline void addUnblockedShadow(const SceneView& scene, PathState& s, const CloudOctaves& octaves,
+                                        const SurfaceHit& hit) {
+    if (!hit.valid()) s.out.radiance += s.shadowContribution * cloudTransmittance(scene, s.ray, octaves, s.rng);
 }
 
 /// A droplet of a cloud before any surface, at ray parameter `tCloud`: the path scatters there by the
@@ -126,13 +127,13 @@ URBIS_HD inline void scatterAtSurface(const SceneView& scene, const RenderSettin
     }
 }
 
-/// Chooses the next ray: the vertex's pending light samples first, then the path's own. False when
-/// the path is done.
-URBIS_HD inline bool nextRay(const SceneView& scene, const RenderSettings& settings, PathState& s) {
+/// Chooses the next ray: the vertex's pending light samples first (a shadow ray's clouds weighed by
+/// `octaves`), then the path's own. False when the path is done.
+URBIS_HD inline bool nextRay(const SceneView& scene, const RenderSettings& settings, PathState& s, CloudOctaves& octaves) {
     s.tracingShadow = false;
     while (s.lightSamplesLeft > 0 && !s.tracingShadow) {
         --s.lightSamplesLeft;
-        s.tracingShadow = sampleShadowRay(scene, settings, s.vertex, s.rng, s.ray, s.shadowContribution, s.shadowOctaves);
+        s.tracingShadow = sampleShadowRay(scene, settings, s.vertex, s.rng, s.ray, s.shadowContribution, octaves);
     }
     if (s.tracingShadow) return true;
     if (s.pathEnds) return false;
@@ -150,15 +151,18 @@ URBIS_HD inline PathSample tracePath(const SceneView& scene, const Camera& camer
     PathState s{pixelSampleStream(settings, px, py, sampleIndex)};
     s.pathRay = cameraSampleRay(camera, settings, px, py, s.rng);
     s.ray = s.pathRay;
+    // Apart from PathState: its arrays are indexed at run time, which would keep the whole state in
+    // the GPU's local memory rather than in registers.
+    CloudOctaves shadowOctaves;
     do {
         const SurfaceHit hit = traceScene(scene, s.ray, s.tracingShadow);
         ++s.out.rays;
-        if (s.tracingShadow) addUnblockedShadow(scene, s, hit);
+        if (s.tracingShadow) addUnblockedShadow(scene, s, shadowOctaves, hit);
         else if (float tCloud; cloudCollision(scene, s.ray, hit.valid() ? hit.t : s.ray.tmax, s.rng, tCloud))
             scatterInCloud(scene, settings, s, tCloud);
         else if (!hit.valid()) escape(scene, settings, s);
         else scatterAtSurface(scene, settings, s, hit);
-    } while (nextRay(scene, settings, s));
+    } while (nextRay(scene, settings, s, shadowOctaves));
     return s.out;
 }
 

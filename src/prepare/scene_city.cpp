@@ -34,7 +34,7 @@ CityMeshOptions cityMeshOptionsOf(const SceneDescription& d, size_t memoryLimit)
     o.materials = d.materials.city;
     o.memoryLimit = memoryLimit;
     o.streets = d.geometry.streets;
-    if (d.geometry.traffic != "auto") o.traffic = d.geometry.traffic == "left" ? TrafficSide::Left : TrafficSide::Right;
+    o.traffic = choiceNamed(kTrafficSides, d.geometry.traffic).value_or(std::nullopt);
     o.hour = hourOf(d);
     o.water = d.water;
     o.trees = d.trees;

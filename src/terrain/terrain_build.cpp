@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <optional>
 
 namespace urbis {
@@ -51,8 +50,8 @@ void checkParams(const TerrainParams& p) {
     auto require = [](bool ok, const char* what) {
         if (!ok) throw InputError(std::string("terrain: ") + what, FailureKind::Usage);
     };
-    require(p.kind == "none" || p.kind == "fbm", "kind must be none or fbm");
-    require(p.interpolation == "bilinear" || p.interpolation == "bicubic", "interpolation must be bilinear or bicubic");
+    require(choiceNamed(kTerrainKinds, p.kind).has_value(), "kind must be none or fbm");
+    require(choiceNamed(kDemInterpolations, p.interpolation).has_value(), "interpolation must be bilinear or bicubic");
     require(p.size > 0 && p.size <= 200000, "size must be in (0, 200000] metres");
     require(p.cell >= 0 && p.cell <= 1000, "cell must be in [0, 1000] metres");
     require(p.fbm.octaves >= 1 && p.fbm.octaves <= 24, "octaves must be in [1, 24]");
@@ -64,8 +63,7 @@ void checkParams(const TerrainParams& p) {
 } // namespace
 
 TerrainMarch terrainMarchOf(const std::string& name) {
-    for (uint32_t i = 0; i < std::size(kTerrainMarches); ++i)
-        if (name == kTerrainMarches[i]) return TerrainMarch(i);
+    if (const std::optional<TerrainMarch> march = choiceNamed(kTerrainMarches, name)) return *march;
     throw InputError("terrain: unknown march '" + name + "' (hierarchy, lei or reference)", FailureKind::Usage);
 }
 
@@ -74,7 +72,7 @@ TerrainField buildTerrain(const TerrainParams& params, const GeoOrigin& origin, 
     const TerrainMarch march = terrainMarchOf(params.march);
     std::optional<DemOnPlane> dem;
     if (!params.dem.empty()) dem.emplace(placeDem(params.dem, origin));
-    const bool fbm = params.kind == "fbm";
+    const bool fbm = params.hasFbm();
     const float cell = params.cell > 0 ? params.cell : dem ? 2.0f : 4.0f;
     // The grid: the fBm's square around the city, and the DEM's rectangle; both with the fade border.
     float xa = INFINITY, xb = -INFINITY, za = INFINITY, zb = -INFINITY;
@@ -125,7 +123,7 @@ TerrainField buildTerrain(const TerrainParams& params, const GeoOrigin& origin, 
             }
             if (dem) {
                 const double col = cols[size_t(j) * nx + i], row = rows[size_t(j) * nx + i];
-                h += dem->raster.sample(col, row, params.interpolation == "bicubic");
+                h += dem->raster.sample(col, row, choiceNamed(kDemInterpolations, params.interpolation) == DemInterpolation::Bicubic);
                 h += fbmTerrainHeight(detail, {x, z});
                 const double px = dem->raster.pixelMetres();
                 const double outside = std::max({-col, col - dem->raster.width(), -row, row - dem->raster.height(), 0.0}) * px;

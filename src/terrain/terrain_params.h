@@ -2,7 +2,9 @@
 // (docs/scene_files.md § terrain): an fBm landscape, a DEM, or both added, and how rays find it.
 #pragma once
 
+#include "base/choice.h"
 #include "math/value_noise.h"
+#include "scene/terrain_record.h"
 
 #include <cstdint>
 #include <string>
@@ -22,11 +24,22 @@ struct DualHeightmap {
     float maskWavelength = 4000.0f;   ///< metres, of the mask's noise: the size of each kind's regions
 };
 
+/// The procedural landscape of TerrainParams::kind, and how a DEM is read between its pixels.
+enum class TerrainKind { None, Fbm };
+enum class DemInterpolation { Bilinear, Bicubic };
+
+/// The choices of TerrainParams::kind, ::march and ::interpolation.
+inline constexpr Choice<TerrainKind> kTerrainKinds[] = {{"none", TerrainKind::None}, {"fbm", TerrainKind::Fbm}};
+inline constexpr Choice<TerrainMarch> kTerrainMarches[] = {
+    {"hierarchy", TerrainMarch::Hierarchy}, {"lei", TerrainMarch::Lei}, {"reference", TerrainMarch::Reference}};
+inline constexpr Choice<DemInterpolation> kDemInterpolations[] = {
+    {"bilinear", DemInterpolation::Bilinear}, {"bicubic", DemInterpolation::Bicubic}};
+
 struct TerrainParams {
-    std::string kind = "none";         ///< "none" or "fbm": the procedural landscape (plus the DEM, if any)
+    std::string kind = "none";         ///< one of kTerrainKinds: the procedural landscape (plus the DEM, if any)
     std::string dem;                   ///< a raster GDAL opens (GeoTIFF, .vrt, ...): real elevation, metres
     std::string march = "hierarchy";   ///< one of kTerrainMarches
-    std::string interpolation = "bicubic";  ///< of the DEM between its pixels: "bilinear" or "bicubic"
+    std::string interpolation = "bicubic";  ///< one of kDemInterpolations: of the DEM between its pixels
     FbmParams fbm;                     ///< the landscape's fBm (kind "fbm")
     DualHeightmap dual;                ///< a second fBm blended with it (kind "fbm")
     float size = 8000.0f;              ///< metres a side of the fBm landscape's grid, around the city
@@ -38,12 +51,8 @@ struct TerrainParams {
     uint32_t leiBisections = 8;
     float referenceStep = 0.25f;       ///< metres, of the reference march
 
-    bool enabled() const { return kind == "fbm" || !dem.empty(); }
+    bool hasFbm() const { return choiceNamed(kTerrainKinds, kind) == TerrainKind::Fbm; }
+    bool enabled() const { return hasFbm() || !dem.empty(); }
 };
-
-/// The choices of TerrainParams::kind, ::march (in TerrainMarch order) and ::interpolation.
-inline constexpr const char* kTerrainKinds[] = {"none", "fbm"};
-inline constexpr const char* kTerrainMarches[] = {"hierarchy", "lei", "reference"};
-inline constexpr const char* kDemInterpolations[] = {"bilinear", "bicubic"};
 
 } // namespace urbis
