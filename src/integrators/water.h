@@ -78,6 +78,7 @@ struct WaterPath {
 
     /// The fraction of radiance left after `metres` of the path (Beer-Lambert).
     URBIS_HD Vec3f transmittance(float metres) const {
+        if (!(maxComponent(absorption) > 0.0f)) return {1, 1, 1};   // in the air, as most paths are: no exponentials
         return {expf(-absorption.x * metres), expf(-absorption.y * metres), expf(-absorption.z * metres)};
     }
 
