@@ -73,6 +73,7 @@ TerrainField buildTerrain(const TerrainParams& params, const GeoOrigin& origin, 
     std::optional<DemOnPlane> dem;
     if (!params.dem.empty()) dem.emplace(placeDem(params.dem, origin));
     const bool fbm = params.hasFbm();
+    const bool bicubic = choiceNamed(kDemInterpolations, params.interpolation) == DemInterpolation::Bicubic;
     const float cell = params.cell > 0 ? params.cell : dem ? 2.0f : 4.0f;
     // The grid: the fBm's square around the city, and the DEM's rectangle; both with the fade border.
     float xa = INFINITY, xb = -INFINITY, za = INFINITY, zb = -INFINITY;
@@ -123,7 +124,7 @@ TerrainField buildTerrain(const TerrainParams& params, const GeoOrigin& origin, 
             }
             if (dem) {
                 const double col = cols[size_t(j) * nx + i], row = rows[size_t(j) * nx + i];
-                h += dem->raster.sample(col, row, choiceNamed(kDemInterpolations, params.interpolation) == DemInterpolation::Bicubic);
+                h += dem->raster.sample(col, row, bicubic);
                 h += fbmTerrainHeight(detail, {x, z});
                 const double px = dem->raster.pixelMetres();
                 const double outside = std::max({-col, col - dem->raster.width(), -row, row - dem->raster.height(), 0.0}) * px;
